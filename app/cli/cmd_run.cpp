@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// `run`: simulate headless and write the trajectory CSV (stdout without --out).
+#include "commands.h"
+
+#include "interrupt.h"
+#include "run_setup.h"
+
+#include "../../core/io/atomic_file.h"
+#include "../../core/io/trajectory_csv.h"
+
+#include <ostream>
+
+namespace ab::cli {
+
+namespace {
+
+// What --summary prints: a few lines a person can read in a terminal.
+struct Summary {
+    long long states = 0;
+    long long firstContactIndex = -1;
+    double firstContactT = 0.0;
+    double haltT = -1.0;
+    double maxSpeed = 0.0;
+    long long contacts = 0;
+
+    void observe(const State& s, long long index)
+    {
+        ++states;
+        const long long counted = s.count + [&] {
+            long long sum = 0;
+            for (int b : s.bounces)
+                sum += b;
+            return sum;
+        }();
+        if (counted > 0 && firstContactIndex < 0) {
+            firstContactIndex = index;
+            firstContactT = s.t;
+        }
+        contacts = std::max(contacts, counted);
+        if (s.halted && haltT < 0.0)
+            haltT = s.t;
+        if (s.size() > 0)
+            maxSpeed = std::max(maxSpeed, s.v.colwise().norm().maxCoeff());
+    }
+
+    void print(std::ostream& out, const Simulation& sim, const State& last) const
+    {
+        const SceneInfo& info = sim.scene();
+        const RunSpec& spec = sim.spec();
+        out << info.key << " (stage " << info.stage << "), " << modelKey(spec.model) << " model";
+        if (spec.model == ModelKind::Physical)
+            out << ", " << integratorKey(spec.integrator);
+        out << ", dt " << formatNumber(sim.dt()) << " " << info.timeUnit << ", " << (states - 1) << " steps to t = "
+            << formatNumber(last.t) << " " << info.timeUnit << "\n";
+        if (firstContactIndex >= 0)
+            out << "first contact recorded at t = " << formatNumber(firstContactT) << " " << info.timeUnit << "\n";
+        out << "contacts counted: " << contacts << "\n";
+        if (haltT >= 0.0)
+            out << "the report's bounce limit stopped the motion at t = " << formatNumber(haltT) << " " << info.timeUnit
+                << "\n";
+        out << "largest speed: " << formatNumber(maxSpeed) << " " << info.lengthUnit << "/" << info.timeUnit << "\n";
+        const int shown = std::min(last.size(), 3);
+        for (int i = 0; i < shown; ++i)
+            out << "ball " << i << " at the end: position (" << formatNumber(last.p(0, i)) << ", "
+                << formatNumber(last.p(1, i)) << ", " << formatNumber(last.p(2, i)) << "), velocity ("
+                << formatNumber(last.v(0, i)) << ", " << formatNumber(last.v(1, i)) << ", "
+                << formatNumber(last.v(2, i)) << ")\n";
+    }
+};
+
+} // namespace
+
+int runCommand(Args& args, std::ostream& out, std::ostream&)
+{
+    const RunSetup setup = readRunSetup(args);
+    const long long every = args.integer("every", 1, 1'000'000'000'000LL).value_or(1);
+    const auto outPath = args.option("out");
+    const bool summary = args.flag("summary");
+    args.finish();
+
+    const auto sim = makeSimulation(setup.spec);
+    if (outPath)
+        checkWritable(*outPath); // fail before a long run, not after
+
+    Summary sum;
+    State last;
+    auto simulate = [&](std::ostream* csv) {
+        long long index = 0;
+        if (csv)
+            writeTrajectoryHeader(*csv);
+        last = runRecorded(
+            *sim, sim->start(), setup.steps, 1,
+            [&](const State& s) {
+                if (csv && index % every == 0)
+                    writeTrajectoryRows(*csv, s);
+                sum.observe(s, index);
+                ++index;
+            },
+            interrupted);
+        throwIfInterrupted();
+    };
+    if (outPath)
+        writeFileAtomically(*outPath, [&](std::ostream& file) { simulate(&file); });
+    else
+        simulate(summary ? nullptr : &out);
+    if (summary)
+        sum.print(out, *sim, last);
+    return 0;
+}
+
+} // namespace ab::cli

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: MIT
+// One function per command; cli.cpp dispatches on the first argument.
+#pragma once
+
+#include "args.h"
+
+#include <iosfwd>
+
+namespace ab::cli {
+
+int listCommand(Args& args, std::ostream& out, std::ostream& err);
+int runCommand(Args& args, std::ostream& out, std::ostream& err);
+
+} // namespace ab::cli

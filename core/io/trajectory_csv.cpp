@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "trajectory_csv.h"
+
+#include "../params.h"
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace ab {
+
+void writeTrajectoryHeader(std::ostream& out)
+{
+    out << "t,ball,x,y,z,vx,vy,vz\n";
+}
+
+void writeTrajectoryRows(std::ostream& out, const State& s)
+{
+    char line[256];
+    for (int i = 0; i < s.size(); ++i) {
+        const int n = std::snprintf(line, sizeof line, "%.17g,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", s.t, i,
+                                    s.p(0, i), s.p(1, i), s.p(2, i), s.v(0, i), s.v(1, i), s.v(2, i));
+        out.write(line, n);
+    }
+}
+
+State readFirstState(const std::filesystem::path& path)
+{
+    std::ifstream in(path);
+    const std::string name = path.string();
+    if (!in)
+        throw InputError("--init: cannot read " + name);
+    std::string line;
+    if (!std::getline(in, line))
+        throw InputError("--init: " + name + " is empty");
+    if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+    if (line.rfind("t,ball,x,y,z,vx,vy,vz", 0) != 0)
+        throw InputError("--init: " + name + " does not start with the header t,ball,x,y,z,vx,vy,vz");
+    std::vector<std::array<double, 7>> rows; // t, x, y, z, vx, vy, vz
+    long lineNo = 1;
+    while (std::getline(in, line)) {
+        ++lineNo;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        if (line.empty())
+            continue;
+        std::vector<std::string_view> cells;
+        std::string_view rest = line;
+        for (std::size_t comma; (comma = rest.find(',')) != std::string_view::npos; rest.remove_prefix(comma + 1))
+            cells.push_back(rest.substr(0, comma));
+        cells.push_back(rest);
+        const std::string where = "--init: " + name + " line " + std::to_string(lineNo);
+        if (cells.size() < 8)
+            throw InputError(where + ": expected 8 columns, found " + std::to_string(cells.size()));
+        std::array<double, 7> row{};
+        row[0] = parseReal(cells[0], where + " column t");
+        const long long ball = parseInteger(cells[1], where + " column ball");
+        static const char* const columns[6] = {"x", "y", "z", "vx", "vy", "vz"};
+        for (int c = 0; c < 6; ++c)
+            row[c + 1] = parseReal(cells[c + 2], where + " column " + columns[c]);
+        if (!rows.empty() && row[0] != rows.front()[0])
+            break; // the next recorded time: the first state is complete
+        if (ball != static_cast<long long>(rows.size()))
+            throw InputError(where + ": ball " + std::to_string(ball) + " where ball " + std::to_string(rows.size()) +
+                             " was expected (balls in index order)");
+        rows.push_back(row);
+    }
+    if (rows.empty())
+        throw InputError("--init: " + name + " has a header but no rows");
+    State s;
+    s.resize(static_cast<int>(rows.size()));
+    s.t = rows.front()[0];
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        for (int a = 0; a < 3; ++a) {
+            s.p(a, static_cast<Eigen::Index>(i)) = rows[i][1 + a];
+            s.v(a, static_cast<Eigen::Index>(i)) = rows[i][4 + a];
+        }
+    return s;
+}
+
+} // namespace ab

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: MIT
+#include "params.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace ab {
+
+namespace {
+
+std::string_view trim(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+        s.remove_suffix(1);
+    return s;
+}
+
+std::string quoted(std::string_view s)
+{
+    return "'" + std::string(s) + "'";
+}
+
+} // namespace
+
+double parseReal(std::string_view text, std::string_view what)
+{
+    const std::string_view t = trim(text);
+    double value = 0.0;
+    const char* first = t.data();
+    const char* last = t.data() + t.size();
+    if (!t.empty() && *first == '+')
+        ++first;
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    if (t.empty() || ec == std::errc::invalid_argument || ptr != last)
+        throw InputError(std::string(what) + ": " + quoted(text) + " is not a number");
+    if (ec == std::errc::result_out_of_range || !std::isfinite(value))
+        throw InputError(std::string(what) + ": " + quoted(text) + " is not a finite number");
+    return value;
+}
+
+long long parseInteger(std::string_view text, std::string_view what)
+{
+    const std::string_view t = trim(text);
+    long long value = 0;
+    const char* first = t.data();
+    const char* last = t.data() + t.size();
+    if (!t.empty() && *first == '+')
+        ++first;
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    if (t.empty() || ec == std::errc::invalid_argument || ptr != last)
+        throw InputError(std::string(what) + ": " + quoted(text) + " is not a whole number");
+    if (ec == std::errc::result_out_of_range)
+        throw InputError(std::string(what) + ": " + quoted(text) + " is too large");
+    return value;
+}
+
+Eigen::Vector3d parseVector(std::string_view text, std::string_view what)
+{
+    Eigen::Vector3d v;
+    std::string_view rest = text;
+    for (int i = 0; i < 3; ++i) {
+        const auto comma = rest.find(',');
+        if ((i < 2) == (comma == std::string_view::npos))
+            throw InputError(std::string(what) + ": " + quoted(text) + " is not a vector x,y,z of three numbers");
+        const std::string_view part = i < 2 ? rest.substr(0, comma) : rest;
+        try {
+            v[i] = parseReal(part, what);
+        } catch (const InputError&) {
+            throw InputError(std::string(what) + ": " + quoted(text) + " is not a vector x,y,z of three finite numbers");
+        }
+        if (i < 2)
+            rest = rest.substr(comma + 1);
+    }
+    return v;
+}
+
+std::string formatNumber(double x)
+{
+    // Shortest text that reads back to the same double: try increasing precision.
+    // Then write numbers below 1e15 without an exponent (2000, not 2e+03).
+    char buf[40];
+    int precision = 1;
+    for (; precision <= 17; ++precision) {
+        std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+        if (std::strtod(buf, nullptr) == x)
+            break;
+    }
+    const double magnitude = std::abs(x);
+    if (magnitude >= 1.0 && magnitude < 1e15) {
+        const int digits = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
+        if (digits > precision)
+            std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    }
+    return buf;
+}
+
+std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value)
+{
+    switch (spec.kind) {
+    case ParamKind::Real:
+        return formatNumber(value[0]);
+    case ParamKind::Integer:
+        return std::to_string(static_cast<long long>(value[0]));
+    case ParamKind::Vector:
+        return formatNumber(value[0]) + "," + formatNumber(value[1]) + "," + formatNumber(value[2]);
+    }
+    return {};
+}
+
+std::string formatRange(const ParamSpec& spec)
+{
+    const bool integer = spec.kind == ParamKind::Integer;
+    auto num = [&](double x) {
+        return integer ? std::to_string(static_cast<long long>(x)) : formatNumber(x);
+    };
+    return std::string(spec.minExclusive ? "(" : "[") + num(spec.min) + ", " + num(spec.max) + "]";
+}
+
+std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value)
+{
+    const int n = spec.kind == ParamKind::Vector ? 3 : 1;
+    for (int i = 0; i < n; ++i) {
+        const double x = value[i];
+        if (!std::isfinite(x))
+            return spec.key + ": value is not a finite number";
+        if (spec.kind == ParamKind::Integer && x != std::floor(x))
+            return spec.key + ": " + formatNumber(x) + " is not a whole number";
+        const bool below = spec.minExclusive ? x <= spec.min : x < spec.min;
+        if (below || x > spec.max) {
+            std::string component = n == 3 ? std::string(" (") + "xyz"[i] + " component)" : std::string();
+            const std::string shown = spec.kind == ParamKind::Integer && std::abs(x) < 9e15
+                                          ? std::to_string(static_cast<long long>(x))
+                                          : formatNumber(x);
+            return spec.key + ": " + shown + component + " is outside the allowed range " + formatRange(spec) +
+                   (spec.unit == "1" || spec.unit.empty() ? std::string() : " " + spec.unit);
+        }
+    }
+    return std::nullopt;
+}
+
+ParamValues::ParamValues(const std::vector<ParamSpec>* table) : table_(table)
+{
+    values_.reserve(table->size());
+    for (const ParamSpec& spec : *table)
+        values_.push_back(spec.defaultValue);
+}
+
+std::optional<std::size_t> ParamValues::indexOf(std::string_view key) const
+{
+    for (std::size_t i = 0; i < table_->size(); ++i)
+        if ((*table_)[i].key == key)
+            return i;
+    return std::nullopt;
+}
+
+const ParamSpec& ParamValues::spec(std::string_view key) const
+{
+    const auto i = indexOf(key);
+    if (!i)
+        throw InputError("unknown parameter '" + std::string(key) + "'");
+    return (*table_)[*i];
+}
+
+double ParamValues::real(std::string_view key) const
+{
+    return values_[*indexOf(spec(key).key)][0];
+}
+
+long long ParamValues::integer(std::string_view key) const
+{
+    return static_cast<long long>(values_[*indexOf(spec(key).key)][0]);
+}
+
+Eigen::Vector3d ParamValues::vector(std::string_view key) const
+{
+    return values_[*indexOf(spec(key).key)];
+}
+
+void ParamValues::set(std::string_view key, const Eigen::Vector3d& value)
+{
+    const ParamSpec& s = spec(key);
+    Eigen::Vector3d v = value;
+    if (s.kind != ParamKind::Vector)
+        v[1] = v[2] = 0.0;
+    if (auto error = checkValue(s, v))
+        throw InputError(*error);
+    values_[*indexOf(key)] = v;
+}
+
+void ParamValues::parse(std::string_view key, std::string_view text)
+{
+    const ParamSpec& s = spec(key);
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    switch (s.kind) {
+    case ParamKind::Real:
+        v[0] = parseReal(text, s.key);
+        break;
+    case ParamKind::Integer:
+        v[0] = static_cast<double>(parseInteger(text, s.key));
+        break;
+    case ParamKind::Vector:
+        v = parseVector(text, s.key);
+        break;
+    }
+    set(key, v);
+}
+
+void ParamValues::parseAssignment(std::string_view assignment)
+{
+    const auto eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0)
+        throw InputError("--set: '" + std::string(assignment) + "' is not NAME=VALUE");
+    parse(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+} // namespace ab

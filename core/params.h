@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Parameter tables: every constant of a scene is described once, here, and every
+// consumer (the CLI's `list` and `--set`, presets, the app's parameter panel) loops over
+// the table instead of knowing names.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ab {
+
+// Raised for any input a user can get wrong (a value, a name, a file). The message names
+// what was wrong and is meant to be shown as it is, on one line.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+enum class ParamKind { Real, Integer, Vector };
+
+// Which models read a parameter. The report model ignores what only the physical model
+// uses, and the app hides controls that would do nothing.
+enum ModelMask : unsigned { ReportModel = 1u, PhysicalModel = 2u, BothModels = 3u };
+
+struct ParamSpec {
+    std::string key;       // name used by --set, presets and the contract
+    std::string symbol;    // as written in the report or the textbook (plain text)
+    std::string unit;      // "1" for dimensionless
+    ParamKind kind = ParamKind::Real;
+    Eigen::Vector3d defaultValue = Eigen::Vector3d::Zero(); // scalars use component 0
+    double min = 0.0;      // per component, inclusive unless minExclusive
+    double max = 0.0;      // per component, inclusive
+    bool minExclusive = false;
+    std::string equation;  // equation or section of the report, e.g. "eq 2.3"
+    std::string meaning;   // one line
+    unsigned models = BothModels;
+
+    bool usedBy(unsigned model) const { return (models & model) != 0; }
+};
+
+// Values for one scene's table, in table order. Built from the defaults, changed only
+// through set()/parse(), which validate, so a ParamValues is always in range.
+class ParamValues {
+public:
+    explicit ParamValues(const std::vector<ParamSpec>* table);
+
+    const std::vector<ParamSpec>& table() const { return *table_; }
+
+    double real(std::string_view key) const;
+    long long integer(std::string_view key) const;
+    Eigen::Vector3d vector(std::string_view key) const;
+    Eigen::Vector3d raw(std::size_t index) const { return values_[index]; }
+
+    // Validates against the spec; throws InputError naming the key and the range.
+    void set(std::string_view key, const Eigen::Vector3d& value);
+    // Parses text ("0.9", "12", "2,20,2") for the key and sets it; throws InputError.
+    void parse(std::string_view key, std::string_view text);
+    // Parses "NAME=VALUE" as given to --set.
+    void parseAssignment(std::string_view assignment);
+
+    std::optional<std::size_t> indexOf(std::string_view key) const;
+    const ParamSpec& spec(std::string_view key) const;
+    bool isDefault(std::size_t index) const { return values_[index] == (*table_)[index].defaultValue; }
+
+    friend bool operator==(const ParamValues& a, const ParamValues& b) { return a.table_ == b.table_ && a.values_ == b.values_; }
+
+private:
+    const std::vector<ParamSpec>* table_;
+    std::vector<Eigen::Vector3d> values_;
+};
+
+// Parsing helpers shared by --set, presets and the app's fields. All throw InputError
+// with `what` (a parameter or option name) in the message.
+double parseReal(std::string_view text, std::string_view what);
+long long parseInteger(std::string_view text, std::string_view what);
+Eigen::Vector3d parseVector(std::string_view text, std::string_view what);
+
+// Checks one value against its spec without storing it; returns the error text or nothing.
+std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value);
+
+// Formats a value as the user would type it back ("0.9", "12", "2,20,2"), shortest
+// representation that reads back exactly.
+std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value);
+std::string formatNumber(double x);
+std::string formatRange(const ParamSpec& spec);
+
+} // namespace ab

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// What every front end drives: a Simulation built from a RunSpec (scene, model,
+// integrator, parameters, step). It is a rule set over State, with no clock, thread or
+// drawing of its own; the CLI, the tests and the app step it the same way.
+#pragma once
+
+#include "scene.h"
+#include "state.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace ab {
+
+struct RunSpec {
+    explicit RunSpec(SceneId id) : scene(id), params(sceneInfo(id).defaults()) {}
+
+    SceneId scene;
+    ModelKind model = ModelKind::Report;
+    Integrator integrator = Integrator::SymplecticEuler;
+    ImpactMode impacts = ImpactMode::Located;
+    Broadphase broadphase = Broadphase::Grid;
+    int threads = 1;
+    std::optional<double> dt; // unset: the model's default for the scene
+    ParamValues params;
+    std::optional<State> init; // start here instead of the parameters' start values
+};
+
+class Simulation {
+public:
+    virtual ~Simulation() = default;
+
+    // The start the parameters describe (ball positions, velocities, seeded draws).
+    virtual State initialState() const = 0;
+    // The state a run starts from: the spec's `init` when given, else initialState().
+    State start() const;
+
+    // Computes `next` from `s`, one step of dt() later. The report's rules may first
+    // correct `s` itself (they clamp a position at a contact and zero the state at the
+    // bounce limit), so `s` is final only once the step from it has been taken: record a
+    // state after the step that leaves it.
+    virtual void step(State& s, State& next) = 0;
+
+    double dt() const { return dt_; }
+    const RunSpec& spec() const { return spec_; }
+    const SceneInfo& scene() const { return sceneInfo(spec_.scene); }
+
+protected:
+    Simulation(RunSpec spec, double dt) : spec_(std::move(spec)), dt_(dt) {}
+
+    RunSpec spec_;
+    double dt_;
+};
+
+// Validates the whole spec (parameters, cross-checks, step, model/integrator fit) and
+// builds the simulation; throws InputError naming what is wrong.
+std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec);
+
+double defaultDt(SceneId scene, ModelKind model);
+long long defaultSteps(SceneId scene, ModelKind model);
+
+// Steps `sim` `steps` times from `start`, handing every `every`-th state (the start
+// included) to `record` in time order, each only once it is final. Returns the last
+// state. `cancelled`, when given, is polled between steps; a cancelled run returns the
+// state reached so far.
+State runRecorded(Simulation& sim, State start, long long steps, long long every,
+                  const std::function<void(const State&)>& record,
+                  const std::function<bool()>& cancelled = {});
+
+} // namespace ab

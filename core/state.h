@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// The changing state of a run: time, ball positions and velocities, and the little memory
+// the report's rules keep (bounce counters). The fixed description lives in the scene's
+// parameters; this is all a step reads and writes.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace ab {
+
+// 3 x N, row-major: x of every ball, then y of every ball, then z (structure of arrays,
+// so one axis of many balls is contiguous). A single ball is `p.col(i)`.
+using Vec3Array = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct State {
+    double t = 0.0;
+    Vec3Array p; // centres
+    Vec3Array v; // velocities
+    // Per-ball contact counters (the report's stage 4 counts bounces per ball).
+    std::vector<int> bounces;
+    // One counter for the whole scene (the report's stages 1-3 share one `count`).
+    long long count = 0;
+    // The report's bounce limit was reached: from here on the report zeroes the state.
+    bool halted = false;
+
+    int size() const { return static_cast<int>(p.cols()); }
+    void resize(int n)
+    {
+        p.setZero(3, n);
+        v.setZero(3, n);
+        bounces.assign(static_cast<std::size_t>(n), 0);
+    }
+};
+
+} // namespace ab

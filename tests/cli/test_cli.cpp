@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// amazeballs-cli run in process: list, run (reproducing the report's listings), and
+// every kind of bad input giving exit status 2 with one line naming it.
+#include "app/cli/cli.h"
+#include "support/report_listings.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+struct Result {
+    int status;
+    std::string out, err;
+};
+
+Result cli(std::vector<std::string> args)
+{
+    std::ostringstream out, err;
+    const int status = ab::cli::run(args, out, err);
+    return {status, out.str(), err.str()};
+}
+
+struct Row {
+    double t;
+    int ball;
+    double p[3], v[3];
+};
+
+std::vector<Row> parseCsv(const std::string& text)
+{
+    std::istringstream in(text);
+    std::string line;
+    std::getline(in, line);
+    if (line != "t,ball,x,y,z,vx,vy,vz")
+        throw std::runtime_error("bad header: " + line);
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        Row r{};
+        if (std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf,%lf,%lf,%lf", &r.t, &r.ball, &r.p[0], &r.p[1], &r.p[2],
+                        &r.v[0], &r.v[1], &r.v[2]) != 8)
+            throw std::runtime_error("bad row: " + line);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+std::string readFile(const std::filesystem::path& p)
+{
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+} // namespace
+
+class Cli : public QObject {
+    Q_OBJECT
+
+private slots:
+    void listShowsEveryParameterWithUnitDefaultRangeAndEquation()
+    {
+        const Result r = cli({"list"});
+        QCOMPARE(r.status, 0);
+        for (const char* needle : {"bounce1d", "box3d", "two-balls", "many-balls", "max_bounces", "contact_factor",
+                                   "unit/step^2", "0.0982", "[0, 1]", "eq 2.3", "2,20,2", "secondary_loss",
+                                   "symplectic-euler", "event", "implicit-midpoint", "physical"})
+            QVERIFY2(r.out.find(needle) != std::string::npos, needle);
+    }
+
+    void runBounce1dWithoutOptionsIsTheReportsStage1()
+    {
+        const Result r = cli({"run", "bounce1d"});
+        QCOMPARE(r.status, 0);
+        const auto rows = parseCsv(r.out);
+        const auto ref = listing::appendixA(-0.0982, 0.6, 2000, 0, 10, 2000);
+        QCOMPARE(rows.size(), std::size_t(2001));
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            QCOMPARE(rows[i].t, double(i));
+            QVERIFY(std::abs(rows[i].p[1] - ref.p[i]) <= 1e-12 * 2000);
+            QVERIFY(std::abs(rows[i].v[1] - ref.v[i]) <= 1e-12 * 2000);
+            QCOMPARE(rows[i].p[0], 0.0);
+            QCOMPARE(rows[i].v[2], 0.0);
+        }
+    }
+
+    void runBox3dWithSetValuesMatchesTheListing()
+    {
+        const Result r = cli({"run", "box3d", "--set", "k=0.75", "--set", "g=5", "--set", "max_bounces=30", "--set",
+                              "p0=20,60,40"});
+        QCOMPARE(r.status, 0);
+        const auto rows = parseCsv(r.out);
+        const auto ref = listing::appendixB(-5, 0.75, 300, {20, 60, 40}, {10, 0, 15}, 30, 6000);
+        QCOMPARE(rows.size(), std::size_t(6001));
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            QVERIFY(std::abs(rows[i].t - 0.01 * double(i)) < 1e-9);
+            for (int a = 0; a < 3; ++a) {
+                QVERIFY(std::abs(rows[i].p[a] - ref.p[i][a]) <= 1e-12 * std::max(1.0, std::abs(ref.p[i][a])));
+                QVERIFY(std::abs(rows[i].v[a] - ref.v[i][a]) <= 1e-12 * std::max(1.0, std::abs(ref.v[i][a])));
+            }
+        }
+    }
+
+    void runTwoBallsWritesBothBallsInIndexOrder()
+    {
+        const Result r = cli({"run", "two-balls", "--steps", "3"});
+        QCOMPARE(r.status, 0);
+        const auto rows = parseCsv(r.out);
+        QCOMPARE(rows.size(), std::size_t(8));
+        QCOMPARE(rows[0].ball, 0);
+        QCOMPARE(rows[1].ball, 1);
+        QCOMPARE(rows[1].p[2], 298.0);
+    }
+
+    void everyKeepsEveryKthStateAndTEndSetsTheLength()
+    {
+        const Result r = cli({"run", "bounce1d", "--t-end", "100", "--every", "10"});
+        QCOMPARE(r.status, 0);
+        const auto rows = parseCsv(r.out);
+        QCOMPARE(rows.size(), std::size_t(11));
+        QCOMPARE(rows.back().t, 100.0);
+    }
+
+    void outWritesTheFileWholeAndInitResumesFromIt()
+    {
+        QTemporaryDir dir;
+        const std::string first = dir.filePath("first.csv").toStdString();
+        QCOMPARE(cli({"run", "box3d", "--steps", "500", "--every", "500", "--out", first}).status, 0);
+        // Resume from the last recorded state: build a one-state file from it.
+        auto rows = parseCsv(readFile(first));
+        QCOMPARE(rows.size(), std::size_t(2));
+        const std::string resume = dir.filePath("resume.csv").toStdString();
+        {
+            std::ofstream f(resume);
+            char line[256];
+            std::snprintf(line, sizeof line, "t,ball,x,y,z,vx,vy,vz\n%.17g,0,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+                          rows[1].t, rows[1].p[0], rows[1].p[1], rows[1].p[2], rows[1].v[0], rows[1].v[1],
+                          rows[1].v[2]);
+            f << line;
+        }
+        const Result resumed = cli({"run", "box3d", "--init", resume, "--steps", "500"});
+        QCOMPARE(resumed.status, 0);
+        const auto r2 = parseCsv(resumed.out);
+        const Result whole = cli({"run", "box3d", "--steps", "1000"});
+        const auto r1 = parseCsv(whole.out);
+        // Same rule from the same state: the free-flight part agrees (no contact counted
+        // before step 500 changes the rule, the counter restarts only matters at the limit).
+        QCOMPARE(r2.front().t, 5.0);
+        QVERIFY(std::abs(r2.back().t - 10.0) < 1e-9);
+        for (int a = 0; a < 3; ++a)
+            QVERIFY(std::abs(r2.back().p[a] - r1.back().p[a]) < 1e-9 * 300);
+        // No temporary file left beside the output.
+        int files = 0;
+        for (const auto& e : std::filesystem::directory_iterator(dir.path().toStdString()))
+            files += e.is_regular_file();
+        QCOMPARE(files, 2);
+    }
+
+    void badInputExitsWith2AndOneLineNamingIt_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("no command") << QStringList{} << "usage";
+        QTest::newRow("unknown command") << QStringList{"fly"} << "unknown command 'fly'";
+        QTest::newRow("unknown scene") << QStringList{"run", "three-balls"} << "unknown scene 'three-balls'";
+        QTest::newRow("missing scene") << QStringList{"run"} << "missing SCENE";
+        QTest::newRow("unknown option") << QStringList{"run", "bounce1d", "--speed", "3"} << "unknown option '--speed'";
+        QTest::newRow("unknown parameter") << QStringList{"run", "bounce1d", "--set", "p0=1,2,3"}
+                                           << "unknown parameter 'p0'";
+        QTest::newRow("out of range") << QStringList{"run", "bounce1d", "--set", "k=2"} << "k: 2 is outside";
+        QTest::newRow("non-finite") << QStringList{"run", "box3d", "--set", "g=nan"} << "g: 'nan' is not a finite number";
+        QTest::newRow("malformed vector") << QStringList{"run", "box3d", "--set", "v0=1;2;3"} << "v0: '1;2;3'";
+        QTest::newRow("bad dt") << QStringList{"run", "box3d", "--dt", "-1"} << "--dt";
+        QTest::newRow("non-finite dt") << QStringList{"run", "box3d", "--dt", "inf"} << "--dt";
+        QTest::newRow("bad steps") << QStringList{"run", "box3d", "--steps", "ten"} << "--steps: 'ten'";
+        QTest::newRow("negative steps") << QStringList{"run", "box3d", "--steps", "-5"} << "--steps: -5 is outside";
+        QTest::newRow("steps and t-end") << QStringList{"run", "box3d", "--steps", "5", "--t-end", "3"} << "not both";
+        QTest::newRow("bad model") << QStringList{"run", "box3d", "--model", "magic"} << "--model: unknown value";
+        QTest::newRow("bad integrator") << QStringList{"run", "box3d", "--integrator", "leapfrog"}
+                                        << "--integrator: unknown value 'leapfrog'";
+        QTest::newRow("missing value") << QStringList{"run", "box3d", "--set"} << "--set: missing value";
+        QTest::newRow("start outside box") << QStringList{"run", "box3d", "--set", "p0=301,5,5"}
+                                           << "outside the box";
+        QTest::newRow("report frame step") << QStringList{"run", "many-balls", "--dt", "0.5"} << "one frame";
+        QTest::newRow("unwritable folder") << QStringList{"run", "bounce1d", "--out", "/nonexistent-dir/x.csv"}
+                                           << "does not exist";
+        QTest::newRow("output is a folder") << QStringList{"run", "bounce1d", "--out", "/tmp"} << "is a folder";
+        QTest::newRow("missing init file") << QStringList{"run", "box3d", "--init", "/nonexistent.csv"}
+                                           << "--init: cannot read";
+        QTest::newRow("stray argument") << QStringList{"list", "extra"} << "unexpected argument 'extra'";
+    }
+
+    void badInputExitsWith2AndOneLineNamingIt()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        std::vector<std::string> a;
+        for (const QString& s : args)
+            a.push_back(s.toStdString());
+        const Result r = cli(a);
+        QCOMPARE(r.status, 2);
+        QVERIFY2(QString::fromStdString(r.err).contains(mentions), r.err.c_str());
+        if (!args.isEmpty())
+            QCOMPARE(std::count(r.err.begin(), r.err.end(), '\n'), 1L);
+        QVERIFY(r.out.empty());
+    }
+
+    void malformedInitFileIsRefusedNamingTheLine()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("bad.csv").toStdString();
+        std::ofstream(path) << "t,ball,x,y,z,vx,vy,vz\n0,0,1,2,3,4,5,6\n0,1,1,2,x,4,5,6\n";
+        const Result r = cli({"run", "many-balls", "--init", path});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.find("line 3 column z") != std::string::npos, r.err.c_str());
+        const Result wrongCount = cli({"run", "box3d", "--init", path});
+        QCOMPARE(wrongCount.status, 2);
+    }
+
+    void failedRunLeavesAnExistingOutputUntouched()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("keep.csv").toStdString();
+        std::ofstream(path) << "precious\n";
+        QCOMPARE(cli({"run", "box3d", "--set", "k=7", "--out", path}).status, 2);
+        QCOMPARE(readFile(path), std::string("precious\n"));
+    }
+};
+
+QTEST_GUILESS_MAIN(Cli)
+#include "test_cli.moc"

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// Parameter tables and the parsing every front end shares.
+#include "core/params.h"
+#include "core/scene.h"
+
+#include <QtTest>
+
+class Params : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everySceneHasTheContractsParameters_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("keys");
+        QTest::newRow("bounce1d") << "bounce1d" << QStringList{"g", "k", "h0", "v0", "max_bounces"};
+        QTest::newRow("box3d") << "box3d" << QStringList{"g", "k", "box", "p0", "v0", "max_bounces"};
+        QTest::newRow("two-balls") << "two-balls"
+                                   << QStringList{"g", "k", "e", "r", "box", "p1", "v1", "p2", "v2", "max_events"};
+        QTest::newRow("many-balls") << "many-balls"
+                                    << QStringList{"n", "r", "box", "g", "primary_loss", "secondary_loss",
+                                                   "max_bounces", "contact_factor", "seed"};
+    }
+
+    void everySceneHasTheContractsParameters()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, keys);
+        const ab::SceneInfo* info = ab::findScene(scene.toStdString());
+        QVERIFY(info);
+        const ab::ParamValues values = info->defaults();
+        for (const QString& k : keys)
+            QVERIFY2(values.indexOf(k.toStdString()).has_value(), qPrintable(k));
+    }
+
+    void everyRowIsDescribedAndItsDefaultIsInRange()
+    {
+        for (const ab::SceneInfo* s : ab::allScenes()) {
+            QVERIFY(!s->equations.empty());
+            for (const ab::ParamSpec& p : s->params) {
+                const QString where = QString::fromStdString(s->key + "." + p.key);
+                QVERIFY2(!p.unit.empty() && !p.equation.empty() && !p.meaning.empty() && !p.symbol.empty(),
+                         qPrintable(where));
+                QVERIFY2(!ab::checkValue(p, p.defaultValue), qPrintable(where));
+            }
+        }
+    }
+
+    void bounce1dHasOneAxisAndNoBoxOrPairParameters()
+    {
+        const ab::SceneInfo& s = ab::sceneInfo(ab::SceneId::Bounce1d);
+        QCOMPARE(s.axes, 1);
+        const auto v = s.defaults();
+        for (const char* absent : {"box", "p0", "r", "e", "n"})
+            QVERIFY(!v.indexOf(absent));
+    }
+
+    void parsesNumbersAndVectors()
+    {
+        QCOMPARE(ab::parseReal(" 0.25 ", "x"), 0.25);
+        QCOMPARE(ab::parseReal("+1e3", "x"), 1000.0);
+        QCOMPARE(ab::parseInteger("42", "n"), 42LL);
+        QCOMPARE(ab::parseVector("2,20,2", "p0"), Eigen::Vector3d(2, 20, 2));
+        QCOMPARE(ab::parseVector("-1.5, 0 ,3e1", "v0"), Eigen::Vector3d(-1.5, 0, 30));
+    }
+
+    void refusesMalformedInputNamingIt_data()
+    {
+        QTest::addColumn<QString>("assignment");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("not a number") << "box3d:k=abc" << "k: 'abc' is not a number";
+        QTest::newRow("trailing junk") << "box3d:k=0.5x" << "not a number";
+        QTest::newRow("nan") << "box3d:k=nan" << "k: 'nan' is not a finite number";
+        QTest::newRow("infinity") << "box3d:g=inf" << "not a finite number";
+        QTest::newRow("overflow") << "box3d:g=1e999" << "not a finite number";
+        QTest::newRow("above range") << "box3d:k=1.5" << "k: 1.5 is outside the allowed range [0, 1]";
+        QTest::newRow("negative box") << "box3d:box=-3" << "outside the allowed range (0,";
+        QTest::newRow("zero box") << "box3d:box=0" << "box: 0 is outside";
+        QTest::newRow("two components") << "box3d:p0=1,2" << "p0: '1,2' is not a vector x,y,z";
+        QTest::newRow("four components") << "box3d:p0=1,2,3,4" << "not a vector";
+        QTest::newRow("empty component") << "box3d:v0=1,,3" << "not a vector";
+        QTest::newRow("fractional count") << "bounce1d:max_bounces=2.5" << "not a whole number";
+        QTest::newRow("unknown name") << "bounce1d:box=3" << "unknown parameter 'box'";
+        QTest::newRow("no equals") << "bounce1d:k" << "is not NAME=VALUE";
+        QTest::newRow("empty value") << "bounce1d:k=" << "is not a number";
+        QTest::newRow("negative component") << "box3d:p0=-1,2,3" << "(x component) is outside";
+        QTest::newRow("too many balls") << "many-balls:n=100000000" << "n: 100000000 is outside";
+    }
+
+    void refusesMalformedInputNamingIt()
+    {
+        QFETCH(QString, assignment);
+        QFETCH(QString, mentions);
+        const QStringList parts = assignment.split(':');
+        const ab::SceneInfo* s = ab::findScene(parts[0].toStdString());
+        ab::ParamValues values = s->defaults();
+        const ab::ParamValues before = values;
+        try {
+            values.parseAssignment(parts[1].toStdString());
+            QFAIL("accepted");
+        } catch (const ab::InputError& e) {
+            QVERIFY2(QString(e.what()).contains(mentions), e.what());
+        }
+        QVERIFY(values == before); // nothing half-applied
+    }
+
+    void formatsValuesSoTheyReadBackExactly()
+    {
+        for (double x : {0.1, 0.0982, 9.82 / 1000.0, 1.0 / 3.0, 2e-300, 123456789.125})
+            QCOMPARE(ab::parseReal(ab::formatNumber(x), "x"), x);
+        QCOMPARE(ab::formatNumber(0.6), std::string("0.6"));
+    }
+
+    void startOutsideTheBoxIsRefused()
+    {
+        const ab::SceneInfo& s = ab::sceneInfo(ab::SceneId::Box3d);
+        ab::ParamValues v = s.defaults();
+        v.parseAssignment("p0=400,20,2");
+        QVERIFY_THROWS_EXCEPTION(ab::InputError, s.crossCheck(v));
+    }
+
+    void enumKeysRoundTrip()
+    {
+        for (ab::Integrator i : ab::allIntegrators())
+            QCOMPARE(ab::parseIntegrator(ab::integratorKey(i)), i);
+        QCOMPARE(ab::parseModel("physical"), ab::ModelKind::Physical);
+        QVERIFY(!ab::parseModel("Physical"));
+        QCOMPARE(ab::parseImpactMode("step-end"), ab::ImpactMode::StepEnd);
+        QCOMPARE(ab::parseBroadphase("all-pairs"), ab::Broadphase::AllPairs);
+    }
+};
+
+QTEST_GUILESS_MAIN(Params)
+#include "test_params.moc"
