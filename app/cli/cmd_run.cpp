@@ -19,6 +19,7 @@ struct Summary {
     long long states = 0;
     long long firstContactIndex = -1;
     double firstContactT = 0.0;
+    double previousT = 0.0;
     double haltT = -1.0;
     double maxSpeed = 0.0;
     long long contacts = 0;
@@ -34,8 +35,9 @@ struct Summary {
         }();
         if (counted > 0 && firstContactIndex < 0) {
             firstContactIndex = index;
-            firstContactT = s.t;
+            firstContactT = previousT; // the step from the previous state counted it
         }
+        previousT = s.t;
         contacts = std::max(contacts, counted);
         if (s.halted && haltT < 0.0)
             haltT = s.t;
@@ -53,7 +55,8 @@ struct Summary {
         out << ", dt " << formatNumber(sim.dt()) << " " << info.timeUnit << ", " << (states - 1) << " steps to t = "
             << formatNumber(last.t) << " " << info.timeUnit << "\n";
         if (firstContactIndex >= 0)
-            out << "first contact recorded at t = " << formatNumber(firstContactT) << " " << info.timeUnit << "\n";
+            out << "first contact: in the step from t = " << formatNumber(firstContactT) << " " << info.timeUnit
+                << "\n";
         out << "contacts counted: " << contacts << "\n";
         if (haltT >= 0.0)
             out << "the report's bounce limit stopped the motion at t = " << formatNumber(haltT) << " " << info.timeUnit

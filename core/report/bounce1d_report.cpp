@@ -28,6 +28,8 @@ public:
     {
         next = s;
         next.t = s.t + dt_;
+        if (s.halted)
+            return; // the listing has stopped: every later state stays zero
         double& p = s.p(1, 0);
         double& v = s.v(1, 0);
         double pNew = 0.0;

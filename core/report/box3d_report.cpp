@@ -61,6 +61,8 @@ public:
     {
         next = s;
         next.t = s.t + dt_;
+        if (s.halted)
+            return; // zero from the limit on; the listing's further zero steps change nothing
         Eigen::Vector3d p = s.p.col(0);
         Eigen::Vector3d pNew, vNew;
         if (propagateInBox(rule_, p, s.v.col(0), pNew, vNew))
