@@ -1,13 +1,21 @@
 // SPDX-License-Identifier: MIT
-// The physical model's entry: one builder per scene, each in the file named after it.
 #include "physical_models.h"
 
 namespace ab::physical {
 
 std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec, double dt)
 {
-    (void)dt;
-    throw InputError("--model physical: not available for " + sceneInfo(spec.scene).key + " in this build");
+    switch (spec.scene) {
+    case SceneId::Bounce1d:
+        return makeBounce1d(spec, dt);
+    case SceneId::Box3d:
+        return makeBox3d(spec, dt);
+    case SceneId::TwoBalls:
+        return makeTwoBalls(spec, dt);
+    case SceneId::ManyBalls:
+        return makeManyBalls(spec, dt);
+    }
+    throw std::logic_error("scene without a physical model");
 }
 
 } // namespace ab::physical
