@@ -26,16 +26,31 @@ std::string quoted(std::string_view s)
 
 } // namespace
 
-double parseReal(std::string_view text, std::string_view what)
+namespace {
+
+// std::from_chars over the whole trimmed text, with an optional leading '+'.
+// Returns the error code, or std::errc::invalid_argument for anything but one number.
+template <typename T>
+std::errc fromWholeText(std::string_view text, T& value)
 {
     const std::string_view t = trim(text);
-    double value = 0.0;
     const char* first = t.data();
     const char* last = t.data() + t.size();
-    if (!t.empty() && *first == '+')
+    if (t.size() > 1 && *first == '+' && first[1] != '-')
         ++first;
     const auto [ptr, ec] = std::from_chars(first, last, value);
-    if (t.empty() || ec == std::errc::invalid_argument || ptr != last)
+    if (t.empty() || ptr != last)
+        return std::errc::invalid_argument;
+    return ec;
+}
+
+} // namespace
+
+double parseReal(std::string_view text, std::string_view what)
+{
+    double value = 0.0;
+    const std::errc ec = fromWholeText(text, value);
+    if (ec == std::errc::invalid_argument)
         throw InputError(std::string(what) + ": " + quoted(text) + " is not a number");
     if (ec == std::errc::result_out_of_range || !std::isfinite(value))
         throw InputError(std::string(what) + ": " + quoted(text) + " is not a finite number");
@@ -44,14 +59,9 @@ double parseReal(std::string_view text, std::string_view what)
 
 long long parseInteger(std::string_view text, std::string_view what)
 {
-    const std::string_view t = trim(text);
     long long value = 0;
-    const char* first = t.data();
-    const char* last = t.data() + t.size();
-    if (!t.empty() && *first == '+')
-        ++first;
-    const auto [ptr, ec] = std::from_chars(first, last, value);
-    if (t.empty() || ec == std::errc::invalid_argument || ptr != last)
+    const std::errc ec = fromWholeText(text, value);
+    if (ec == std::errc::invalid_argument)
         throw InputError(std::string(what) + ": " + quoted(text) + " is not a whole number");
     if (ec == std::errc::result_out_of_range)
         throw InputError(std::string(what) + ": " + quoted(text) + " is too large");

@@ -83,6 +83,8 @@ private slots:
         QTest::newRow("unknown name") << "bounce1d:box=3" << "unknown parameter 'box'";
         QTest::newRow("no equals") << "bounce1d:k" << "is not NAME=VALUE";
         QTest::newRow("empty value") << "bounce1d:k=" << "is not a number";
+        QTest::newRow("two signs") << "bounce1d:v0=+-5" << "is not a number";
+        QTest::newRow("hex") << "bounce1d:h0=0x10" << "is not a number";
         QTest::newRow("negative component") << "box3d:p0=-1,2,3" << "(x component) is outside";
         QTest::newRow("too many balls") << "many-balls:n=100000000" << "n: 100000000 is outside";
     }
