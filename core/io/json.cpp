@@ -136,7 +136,7 @@ private:
             return "the end of the text";
         const unsigned char c = static_cast<unsigned char>(peek());
         if (c < 0x20 || c >= 0x7F)
-            return "a character that cannot start a value";
+            return "a control or non-ASCII character";
         return std::string("'") + peek() + "'";
     }
 
@@ -202,7 +202,7 @@ private:
             const std::size_t keyAt = pos_;
             std::string key = string();
             if (v.find(key))
-                failAt(keyAt, "duplicate key '" + key + "'");
+                failAt(keyAt, "duplicate key '" + printable(key) + "'");
             expect(':', "after a key");
             v.add(std::move(key), value(depth));
             skipSpace();
@@ -402,9 +402,9 @@ private:
     std::size_t pos_ = 0;
 };
 
-void writeString(std::string& out, std::string_view s)
+// JSON's escapes for what may not stand raw in a string (RFC 8259 section 7).
+void appendEscaped(std::string& out, std::string_view s)
 {
-    out += '"';
     for (const char c : s) {
         if (c == '"' || c == '\\') {
             out += '\\';
@@ -421,6 +421,12 @@ void writeString(std::string& out, std::string_view s)
             out += c;
         }
     }
+}
+
+void writeString(std::string& out, std::string_view s)
+{
+    out += '"';
+    appendEscaped(out, s);
     out += '"';
 }
 
@@ -473,6 +479,20 @@ void writeValue(std::string& out, const Value& v, int indent)
 }
 
 } // namespace
+
+std::string printable(std::string_view text, std::size_t max)
+{
+    std::string out;
+    if (text.size() <= max) {
+        appendEscaped(out, text);
+        return out;
+    }
+    std::size_t cut = max;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+        --cut; // not inside a UTF-8 sequence
+    appendEscaped(out, text.substr(0, cut));
+    return out + "...";
+}
 
 Value parse(std::string_view text, const std::string& origin)
 {

@@ -50,6 +50,10 @@ struct Member {
     friend bool operator==(const Member&, const Member&) = default;
 };
 
+// Text from a file or a command line made safe to quote in a one-line message: control
+// characters escaped as in JSON, cut after `max` bytes with "...".
+std::string printable(std::string_view text, std::size_t max = 60);
+
 // "an object", "a number", ... for messages.
 std::string_view kindName(Value::Kind kind);
 

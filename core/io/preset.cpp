@@ -56,7 +56,8 @@ struct Where {
 
     Where operator/(std::string_view key) const
     {
-        return {origin, path.empty() ? std::string(key) : path + "." + std::string(key)};
+        const std::string shownKey = json::printable(key); // a key may hold anything
+        return {origin, path.empty() ? shownKey : path + "." + shownKey};
     }
     Where operator[](std::size_t i) const { return {origin, path + "[" + std::to_string(i) + "]"}; }
 
@@ -139,7 +140,7 @@ E key(const Value& v, const Where& at, std::optional<E> (*parse)(std::string_vie
     const std::string& k = text(v, at);
     if (const auto e = parse(k))
         return *e;
-    at.fail("unknown value '" + k + "' (choose " + choices + ")");
+    at.fail("unknown value '" + json::printable(k) + "' (choose " + choices + ")");
 }
 
 std::optional<SceneId> sceneByKey(std::string_view k)
@@ -266,10 +267,11 @@ void checkView(const PresetView& view, const Where& at, long long ballCount)
     for (std::size_t i = 0; i < view.charts.size(); ++i) {
         const std::string& chart = view.charts[i];
         if (!isChartKey(chart))
-            (at / "charts")[i].fail("'" + chart + "' is not a chart key (lowercase letters, digits, '-' and '_')");
+            (at / "charts")[i].fail("'" + json::printable(chart) +
+                                    "' is not a chart key (lowercase letters, digits, '-' and '_')");
         if (std::find(view.charts.begin(), view.charts.begin() + static_cast<std::ptrdiff_t>(i), chart) !=
             view.charts.begin() + static_cast<std::ptrdiff_t>(i))
-            (at / "charts")[i].fail("'" + chart + "' is listed twice");
+            (at / "charts")[i].fail("'" + json::printable(chart) + "' is listed twice");
     }
     if (view.selectedBall && (*view.selectedBall < 0 || *view.selectedBall >= ballCount))
         (at / "selected_ball")
@@ -378,6 +380,12 @@ Value presetValue(const Preset& p)
     return doc;
 }
 
+// How messages name a preset that has no file.
+std::string presetOrigin(const Preset& p)
+{
+    return "preset '" + json::printable(p.name) + "'";
+}
+
 std::string readPresetFile(const std::string& path, const std::string& origin)
 {
     std::error_code ec;
@@ -432,13 +440,13 @@ Preset parsePreset(std::string_view jsonText, const std::string& origin)
 
 std::string presetToJson(const Preset& preset)
 {
-    checkPreset(preset, "preset '" + preset.name + "'");
+    checkPreset(preset, presetOrigin(preset));
     return json::write(presetValue(preset));
 }
 
 void savePreset(const std::filesystem::path& path, const Preset& preset)
 {
-    const std::string origin = "preset " + path.string();
+    const std::string origin = "preset " + json::printable(path.string(), 4096);
     checkPreset(preset, origin);
     const std::string text = presetToJson(preset);
     // Numbers are formatted by the C library; a locale with a decimal comma would make
@@ -480,16 +488,16 @@ Preset loadPreset(const std::string& nameOrPath)
         std::vector<std::string> keys;
         for (const BuiltinPreset& b : builtinPresets())
             keys.push_back(b.key);
-        throw InputError("preset '" + nameOrPath + "': no built-in preset has that name (built-in: " + joined(keys) +
-                         "); a preset file's name ends in .json");
+        throw InputError("preset '" + json::printable(nameOrPath) + "': no built-in preset has that name (built-in: " +
+                         joined(keys) + "); a preset file's name ends in .json");
     }
-    const std::string origin = "preset " + nameOrPath;
+    const std::string origin = "preset " + json::printable(nameOrPath, 4096);
     return parsePreset(readPresetFile(nameOrPath, origin), origin);
 }
 
 void applyPreset(const Preset& preset, RunSpec& spec)
 {
-    const std::string origin = "preset '" + preset.name + "'";
+    const std::string origin = presetOrigin(preset);
     if (preset.scene != spec.scene)
         throw InputError(origin + " is for scene " + sceneInfo(preset.scene).key + ", not " +
                          sceneInfo(spec.scene).key);

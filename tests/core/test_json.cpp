@@ -204,6 +204,14 @@ private slots:
         QVERIFY(text.find('\n') == text.size() - 1); // control characters are escaped
     }
 
+    void printableTextIsOneShortLine()
+    {
+        QCOMPARE(ab::json::printable("a\nb\x01\"c\""), std::string("a\\nb\\u0001\\\"c\\\""));
+        QCOMPARE(ab::json::printable(std::string(100, 'x')), std::string(60, 'x') + "...");
+        // Cut before a character, never inside its UTF-8 bytes.
+        QCOMPARE(ab::json::printable(std::string(59, 'x') + "\xC3\xA9yz"), std::string(59, 'x') + "...");
+    }
+
     void writerRefusesNonFiniteNumbers()
     {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,

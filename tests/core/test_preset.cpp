@@ -316,6 +316,8 @@ private slots:
         QTest::newRow("unknown scene") << doc("three-balls")
                                        << "scene: unknown value 'three-balls' (choose bounce1d, box3d, two-balls";
         QTest::newRow("unknown key") << doc("box3d", R"(, "colour": "red")") << "colour: unknown key (known here:";
+        QTest::newRow("unknown key with a line break")
+            << doc("box3d", ", \"a\\nb\": 1") << "a\\nb: unknown key (known here:";
         QTest::newRow("unknown key in the camera") << doc("box3d", R"(, "view": {"camera": {"zoom": 2}})")
                                                    << "view.camera.zoom: unknown key (known here: yaw, pitch";
         QTest::newRow("name as a number") << QByteArray(R"({"format": "amazeballs-preset", "version": 1, "name": 5})")
