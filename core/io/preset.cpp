@@ -1,13 +1,514 @@
 // SPDX-License-Identifier: MIT
+// The preset file, version 1. Keys in this order; only format, version, name, scene and
+// model are required, and no other key is allowed anywhere:
+//
+//   {
+//     "format": "amazeballs-preset",
+//     "version": 1,
+//     "name": "One ball in a box, as in the report",   a short title
+//     "description": "...",                            one or two sentences (optional)
+//     "scene": "box3d",                                bounce1d | box3d | two-balls | many-balls
+//     "model": "report",                               report | physical
+//     "integrator": "rk4",                             any integrator key (optional)
+//     "impacts": "located",                            located | step-end (optional)
+//     "dt": 0.01,                                      step, > 0, scene time unit (optional)
+//     "steps": 6000,                                   run length, whole, 0..4e9 (optional)
+//     "params": {"k": 0.8, "p0": [2, 20, 2]},          only the ones set; vectors as [x, y, z],
+//                                                      integers integral; checked against the
+//                                                      scene's table and its cross-check
+//     "view": {                                        what the app shows (optional, all parts)
+//       "camera": {"yaw": 30, "pitch": 20, "distance": 600, "target": [150, 100, 150]},
+//       "charts": ["position", "velocity"],
+//       "selected_ball": 0
+//     }
+//   }
+//
+// Yaw and pitch are in degrees (pitch within [-90, 90]), distance and target in the
+// scene's length unit. A preset is a whole setup: applying it resets what it leaves out
+// (integrator, impacts, step, parameters) to the defaults. Every error names the file and
+// the field path ("preset foo.json: params.k: ..."); reading never builds a simulation.
 #include "preset.h"
+
+#include "atomic_file.h"
+#include "embedded_presets.h"
+#include "json.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <initializer_list>
 
 namespace ab {
 
-Preset loadPreset(const std::string& nameOrPath)
+namespace {
+
+using json::Value;
+
+constexpr std::string_view formatTag = "amazeballs-preset";
+constexpr long long maxSteps = 4'000'000'000LL; // as `run --steps`
+
+// Where a value sits in the document, for messages: the file and a dotted path.
+struct Where {
+    const std::string& origin;
+    std::string path; // e.g. "view.camera.yaw"; empty for the document itself
+
+    Where operator/(std::string_view key) const
+    {
+        const std::string shownKey = json::printable(key); // a key may hold anything
+        return {origin, path.empty() ? shownKey : path + "." + shownKey};
+    }
+    Where operator[](std::size_t i) const { return {origin, path + "[" + std::to_string(i) + "]"}; }
+
+    [[noreturn]] void fail(const std::string& what) const
+    {
+        throw InputError(origin + ": " + (path.empty() ? std::string() : path + ": ") + what);
+    }
+};
+
+std::string joined(const std::vector<std::string>& words)
 {
-    throw InputError("--preset " + nameOrPath + ": presets are not readable in this build");
+    std::string out;
+    for (const std::string& w : words)
+        out += (out.empty() ? "" : ", ") + w;
+    return out;
 }
 
-void applyPreset(const Preset&, RunSpec&) {}
+// ---- Reading: types --------------------------------------------------------------------
+
+void expectKind(const Value& v, Value::Kind kind, const Where& at)
+{
+    if (v.kind != kind)
+        at.fail("expected " + std::string(json::kindName(kind)) + ", found " + std::string(json::kindName(v.kind)));
+}
+
+// An object whose keys are all in `known`.
+void checkObject(const Value& v, const Where& at, std::initializer_list<std::string_view> known)
+{
+    expectKind(v, Value::Kind::Object, at);
+    for (const json::Member& m : v.members) {
+        if (std::find(known.begin(), known.end(), m.key) != known.end())
+            continue;
+        std::vector<std::string> names(known.begin(), known.end());
+        (at / m.key).fail("unknown key (known here: " + joined(names) + ")");
+    }
+}
+
+const Value& required(const Value& obj, std::string_view key, const Where& at)
+{
+    if (const Value* v = obj.find(key))
+        return *v;
+    at.fail("missing field '" + std::string(key) + "'");
+}
+
+const std::string& text(const Value& v, const Where& at)
+{
+    expectKind(v, Value::Kind::String, at);
+    return v.text;
+}
+
+double number(const Value& v, const Where& at)
+{
+    expectKind(v, Value::Kind::Number, at);
+    return v.number; // finite: the JSON reader refuses anything else
+}
+
+long long whole(const Value& v, const Where& at, double min, double max)
+{
+    const double x = number(v, at);
+    if (x != std::floor(x))
+        at.fail(formatNumber(x) + " is not a whole number");
+    if (x < min || x > max)
+        at.fail(formatNumber(x) + " is outside [" + formatNumber(min) + ", " + formatNumber(max) + "]");
+    return static_cast<long long>(x);
+}
+
+Eigen::Vector3d vector3(const Value& v, const Where& at)
+{
+    if (v.kind != Value::Kind::Array || v.items.size() != 3)
+        at.fail("expected an array of 3 numbers [x, y, z]");
+    Eigen::Vector3d out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = number(v.items[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(i)]);
+    return out;
+}
+
+template <typename E>
+E key(const Value& v, const Where& at, std::optional<E> (*parse)(std::string_view), const std::string& choices)
+{
+    const std::string& k = text(v, at);
+    if (const auto e = parse(k))
+        return *e;
+    at.fail("unknown value '" + json::printable(k) + "' (choose " + choices + ")");
+}
+
+std::optional<SceneId> sceneByKey(std::string_view k)
+{
+    const SceneInfo* info = findScene(k);
+    return info ? std::optional<SceneId>(info->id) : std::nullopt;
+}
+
+std::string sceneChoices()
+{
+    std::vector<std::string> keys;
+    for (const SceneInfo* s : allScenes())
+        keys.push_back(s->key);
+    return joined(keys);
+}
+
+std::string integratorChoices()
+{
+    std::vector<std::string> keys;
+    for (Integrator i : allIntegrators())
+        keys.emplace_back(integratorKey(i));
+    return joined(keys);
+}
+
+// ---- Reading: the sections -------------------------------------------------------------
+
+// Format and version come first, so a newer file is named as such before any key it adds
+// is called unknown.
+void readHeader(const Value& doc, const Where& root)
+{
+    expectKind(doc, Value::Kind::Object, root);
+    const Value& format = required(doc, "format", root);
+    if (format.kind != Value::Kind::String || format.text != formatTag)
+        (root / "format").fail("this is not an Amazeballs preset (expected \"" + std::string(formatTag) + "\")");
+    const Where at = root / "version";
+    const double version = number(required(doc, "version", root), at);
+    if (version > Preset::currentVersion)
+        at.fail("made by a newer Amazeballs (file version " + formatNumber(version) + "; this program reads version " +
+                std::to_string(Preset::currentVersion) + ")");
+    if (version != Preset::currentVersion)
+        at.fail(formatNumber(version) + " is not a preset version (this program reads version " +
+                std::to_string(Preset::currentVersion) + ")");
+}
+
+const ParamSpec* findParam(const SceneInfo& info, std::string_view name)
+{
+    const auto spec =
+        std::find_if(info.params.begin(), info.params.end(), [&](const ParamSpec& s) { return s.key == name; });
+    return spec == info.params.end() ? nullptr : &*spec;
+}
+
+std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Value& v, const Where& at, const SceneInfo& info)
+{
+    expectKind(v, Value::Kind::Object, at);
+    std::vector<std::pair<std::string, Eigen::Vector3d>> params;
+    for (const json::Member& m : v.members) {
+        const Where here = at / m.key;
+        const ParamSpec* spec = findParam(info, m.key);
+        if (!spec) {
+            std::vector<std::string> names;
+            for (const ParamSpec& s : info.params)
+                names.push_back(s.key);
+            here.fail("unknown parameter of " + info.key + " (known: " + joined(names) + ")");
+        }
+        const Eigen::Vector3d value =
+            spec->kind == ParamKind::Vector ? vector3(m.value, here) : Eigen::Vector3d(number(m.value, here), 0, 0);
+        params.emplace_back(m.key, value);
+    }
+    return params;
+}
+
+PresetView readView(const Value& v, const Where& at)
+{
+    checkObject(v, at, {"camera", "charts", "selected_ball"});
+    PresetView view;
+    if (const Value* camera = v.find("camera")) {
+        const Where c = at / "camera";
+        checkObject(*camera, c, {"yaw", "pitch", "distance", "target"});
+        if (const Value* x = camera->find("yaw"))
+            view.cameraYaw = number(*x, c / "yaw");
+        if (const Value* x = camera->find("pitch"))
+            view.cameraPitch = number(*x, c / "pitch");
+        if (const Value* x = camera->find("distance"))
+            view.cameraDistance = number(*x, c / "distance");
+        if (const Value* x = camera->find("target"))
+            view.cameraTarget = vector3(*x, c / "target");
+    }
+    if (const Value* charts = v.find("charts")) {
+        expectKind(*charts, Value::Kind::Array, at / "charts");
+        for (std::size_t i = 0; i < charts->items.size(); ++i)
+            view.charts.push_back(text(charts->items[i], (at / "charts")[i]));
+    }
+    if (const Value* ball = v.find("selected_ball"))
+        view.selectedBall = static_cast<int>(whole(*ball, at / "selected_ball", 0, 1e9));
+    return view;
+}
+
+// ---- Checking values (shared by reading, saving and applying) ---------------------------
+
+// A value for a message; a preset built in code may hold NaN, which is never printed.
+std::string shown(double x)
+{
+    return std::isfinite(x) ? formatNumber(x) : std::string("a non-finite value");
+}
+
+bool isChartKey(const std::string& k)
+{
+    return !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+    });
+}
+
+void checkView(const PresetView& view, const Where& at, long long ballCount)
+{
+    const Where camera = at / "camera";
+    if (view.cameraYaw && !std::isfinite(*view.cameraYaw))
+        (camera / "yaw").fail("not a finite number");
+    if (view.cameraPitch && !(std::abs(*view.cameraPitch) <= 90.0))
+        (camera / "pitch").fail(shown(*view.cameraPitch) + " is outside [-90, 90] degrees");
+    if (view.cameraDistance && !(*view.cameraDistance > 0.0 && std::isfinite(*view.cameraDistance)))
+        (camera / "distance").fail(shown(*view.cameraDistance) + " must be a positive distance");
+    if (view.cameraTarget && !view.cameraTarget->allFinite())
+        (camera / "target").fail("not three finite numbers");
+    for (std::size_t i = 0; i < view.charts.size(); ++i) {
+        const std::string& chart = view.charts[i];
+        if (!isChartKey(chart))
+            (at / "charts")[i].fail("'" + json::printable(chart) +
+                                    "' is not a chart key (lowercase letters, digits, '-' and '_')");
+        if (std::find(view.charts.begin(), view.charts.begin() + static_cast<std::ptrdiff_t>(i), chart) !=
+            view.charts.begin() + static_cast<std::ptrdiff_t>(i))
+            (at / "charts")[i].fail("'" + json::printable(chart) + "' is listed twice");
+    }
+    if (view.selectedBall && (*view.selectedBall < 0 || *view.selectedBall >= ballCount))
+        (at / "selected_ball")
+            .fail(std::to_string(*view.selectedBall) + " is not a ball of this scene (balls 0 to " +
+                  std::to_string(ballCount - 1) + ")");
+}
+
+// Checks every value of the preset; returns the scene's parameters with the preset's set.
+ParamValues checkPreset(const Preset& p, const std::string& origin)
+{
+    const Where root{origin, ""};
+    const SceneInfo& info = sceneInfo(p.scene);
+    if (p.dt && !(*p.dt > 0.0 && std::isfinite(*p.dt)))
+        (root / "dt").fail(shown(*p.dt) + " must be a positive step in " + info.timeUnit);
+    if (p.steps && (*p.steps < 0 || *p.steps > maxSteps))
+        (root / "steps").fail(std::to_string(*p.steps) + " is outside [0, " + std::to_string(maxSteps) + "]");
+
+    ParamValues values = info.defaults();
+    std::vector<std::string> seen;
+    for (const auto& [name, value] : p.params) {
+        const Where at = root / "params" / name;
+        if (!values.indexOf(name))
+            at.fail("unknown parameter of " + info.key);
+        if (std::find(seen.begin(), seen.end(), name) != seen.end())
+            at.fail("set twice");
+        seen.push_back(name);
+        const ParamSpec& spec = values.spec(name);
+        if (spec.kind != ParamKind::Vector && (value.y() != 0.0 || value.z() != 0.0))
+            at.fail("holds a vector; this parameter is one number");
+        if (const auto error = checkValue(spec, value))
+            throw InputError(origin + ": params." + *error); // checkValue's text starts with the name
+        values.set(name, value);
+    }
+    if (info.crossCheck) {
+        try {
+            info.crossCheck(values);
+        } catch (const InputError& e) {
+            throw InputError(origin + ": params." + e.what()); // the cross-check names the parameter first
+        }
+    }
+    checkView(p.view, root / "view", info.ballCount != 0 ? info.ballCount : values.integer("n"));
+    return values;
+}
+
+// ---- Writing ---------------------------------------------------------------------------
+
+Value vectorValue(const Eigen::Vector3d& v)
+{
+    return Value::makeArray({Value::makeNumber(v.x()), Value::makeNumber(v.y()), Value::makeNumber(v.z())});
+}
+
+Value viewValue(const PresetView& view)
+{
+    Value camera = Value::makeObject();
+    if (view.cameraYaw)
+        camera.add("yaw", Value::makeNumber(*view.cameraYaw));
+    if (view.cameraPitch)
+        camera.add("pitch", Value::makeNumber(*view.cameraPitch));
+    if (view.cameraDistance)
+        camera.add("distance", Value::makeNumber(*view.cameraDistance));
+    if (view.cameraTarget)
+        camera.add("target", vectorValue(*view.cameraTarget));
+    Value out = Value::makeObject();
+    if (!camera.members.empty())
+        out.add("camera", std::move(camera));
+    if (!view.charts.empty()) {
+        std::vector<Value> charts;
+        for (const std::string& c : view.charts)
+            charts.push_back(Value::makeString(c));
+        out.add("charts", Value::makeArray(std::move(charts)));
+    }
+    if (view.selectedBall)
+        out.add("selected_ball", Value::makeNumber(*view.selectedBall));
+    return out;
+}
+
+Value presetValue(const Preset& p)
+{
+    const SceneInfo& info = sceneInfo(p.scene);
+    Value doc = Value::makeObject();
+    doc.add("format", Value::makeString(std::string(formatTag)))
+        .add("version", Value::makeNumber(Preset::currentVersion))
+        .add("name", Value::makeString(p.name))
+        .add("description", Value::makeString(p.description))
+        .add("scene", Value::makeString(info.key))
+        .add("model", Value::makeString(std::string(modelKey(p.model))));
+    if (p.integrator)
+        doc.add("integrator", Value::makeString(std::string(integratorKey(*p.integrator))));
+    if (p.impacts)
+        doc.add("impacts", Value::makeString(std::string(impactModeKey(*p.impacts))));
+    if (p.dt)
+        doc.add("dt", Value::makeNumber(*p.dt));
+    if (p.steps)
+        doc.add("steps", Value::makeNumber(static_cast<double>(*p.steps))); // exact: steps <= 4e9 < 2^53
+    if (!p.params.empty()) {
+        Value params = Value::makeObject();
+        for (const auto& [name, value] : p.params) {
+            const bool isVector = findParam(info, name)->kind == ParamKind::Vector; // checked above
+            params.add(name, isVector ? vectorValue(value) : Value::makeNumber(value.x()));
+        }
+        doc.add("params", std::move(params));
+    }
+    Value view = viewValue(p.view);
+    if (!view.members.empty())
+        doc.add("view", std::move(view));
+    return doc;
+}
+
+// How messages name a preset that has no file.
+std::string presetOrigin(const Preset& p)
+{
+    return "preset '" + json::printable(p.name) + "'";
+}
+
+std::string readPresetFile(const std::string& path, const std::string& origin)
+{
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(origin + ": is a folder, not a preset file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(origin + ": cannot read the file (" + std::strerror(errno) + ")");
+    std::string text(json::maxBytes + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (in.bad())
+        throw InputError(origin + ": cannot read the file (" + std::strerror(errno) + ")");
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > json::maxBytes)
+        throw InputError(origin + ": the file is larger than " + std::to_string(json::maxBytes >> 20) +
+                         " MiB; a preset is a few hundred bytes");
+    return text;
+}
+
+} // namespace
+
+Preset parsePreset(std::string_view jsonText, const std::string& origin)
+{
+    const Value doc = json::parse(jsonText, origin);
+    const Where root{origin, ""};
+    readHeader(doc, root);
+    checkObject(doc, root,
+                {"format", "version", "name", "description", "scene", "model", "integrator", "impacts", "dt", "steps",
+                 "params", "view"});
+
+    Preset p;
+    p.name = text(required(doc, "name", root), root / "name");
+    if (const Value* v = doc.find("description"))
+        p.description = text(*v, root / "description");
+    p.scene = key<SceneId>(required(doc, "scene", root), root / "scene", sceneByKey, sceneChoices());
+    p.model = key<ModelKind>(required(doc, "model", root), root / "model", parseModel, "report, physical");
+    if (const Value* v = doc.find("integrator"))
+        p.integrator = key<Integrator>(*v, root / "integrator", parseIntegrator, integratorChoices());
+    if (const Value* v = doc.find("impacts"))
+        p.impacts = key<ImpactMode>(*v, root / "impacts", parseImpactMode, "located, step-end");
+    if (const Value* v = doc.find("dt"))
+        p.dt = number(*v, root / "dt");
+    if (const Value* v = doc.find("steps"))
+        p.steps = whole(*v, root / "steps", 0, static_cast<double>(maxSteps));
+    if (const Value* v = doc.find("params"))
+        p.params = readParams(*v, root / "params", sceneInfo(p.scene));
+    if (const Value* v = doc.find("view"))
+        p.view = readView(*v, root / "view");
+    checkPreset(p, origin);
+    return p;
+}
+
+std::string presetToJson(const Preset& preset)
+{
+    checkPreset(preset, presetOrigin(preset));
+    return json::write(presetValue(preset));
+}
+
+void savePreset(const std::filesystem::path& path, const Preset& preset)
+{
+    const std::string origin = "preset " + json::printable(path.string(), 4096);
+    checkPreset(preset, origin);
+    const std::string text = presetToJson(preset);
+    // Numbers are formatted by the C library; a locale with a decimal comma would make
+    // text that is not JSON. Write only what reads back as the same preset.
+    bool readsBack = false;
+    try {
+        readsBack = parsePreset(text, origin) == preset;
+    } catch (const InputError&) {
+    }
+    if (!readsBack)
+        throw std::logic_error(origin + ": not saved: the text would not read back as this preset");
+    writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
+const std::vector<BuiltinPreset>& builtinPresets()
+{
+    static const std::vector<BuiltinPreset> list = [] {
+        std::vector<BuiltinPreset> l;
+        for (const embedded::File& f : embedded::presetFiles())
+            l.push_back({std::string(f.key), parsePreset(f.text, "built-in preset " + std::string(f.key))});
+        // The report's stages in order, each stage's report preset first.
+        std::stable_sort(l.begin(), l.end(), [](const BuiltinPreset& a, const BuiltinPreset& b) {
+            const auto rank = [](const BuiltinPreset& x) {
+                return std::pair(sceneInfo(x.preset.scene).stage, !x.key.ends_with("-report"));
+            };
+            return rank(a) < rank(b);
+        });
+        return l;
+    }();
+    return list;
+}
+
+Preset loadPreset(const std::string& nameOrPath)
+{
+    for (const BuiltinPreset& b : builtinPresets())
+        if (b.key == nameOrPath)
+            return b.preset;
+    if (!nameOrPath.ends_with(".json") && nameOrPath.find('/') == std::string::npos) {
+        std::vector<std::string> keys;
+        for (const BuiltinPreset& b : builtinPresets())
+            keys.push_back(b.key);
+        throw InputError("preset '" + json::printable(nameOrPath) + "': no built-in preset has that name (built-in: " +
+                         joined(keys) + "); a preset file's name ends in .json");
+    }
+    const std::string origin = "preset " + json::printable(nameOrPath, 4096);
+    return parsePreset(readPresetFile(nameOrPath, origin), origin);
+}
+
+void applyPreset(const Preset& preset, RunSpec& spec)
+{
+    const std::string origin = presetOrigin(preset);
+    if (preset.scene != spec.scene)
+        throw InputError(origin + " is for scene " + sceneInfo(preset.scene).key + ", not " +
+                         sceneInfo(spec.scene).key);
+    ParamValues values = checkPreset(preset, origin);
+    // Everything is checked: from here on nothing can fail, so nothing is half-applied.
+    const RunSpec defaults(spec.scene);
+    spec.model = preset.model;
+    spec.integrator = preset.integrator.value_or(defaults.integrator);
+    spec.impacts = preset.impacts.value_or(defaults.impacts);
+    spec.dt = preset.dt;
+    spec.params = std::move(values);
+}
 
 } // namespace ab
