@@ -3,8 +3,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <sstream>
 
 namespace ab {
 
@@ -90,22 +88,20 @@ Eigen::Vector3d parseVector(std::string_view text, std::string_view what)
 
 std::string formatNumber(double x)
 {
-    // Shortest text that reads back to the same double: try increasing precision.
-    // Then write numbers below 1e15 without an exponent (2000, not 2e+03).
-    char buf[40];
-    int precision = 1;
-    for (; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, x);
-        if (std::strtod(buf, nullptr) == x)
-            break;
-    }
+    // std::to_chars is locale-independent (a Qt application sets the C locale from the
+    // environment, where printf would write "0,9") and, without a precision, gives the
+    // shortest text that reads back to the same double. Numbers from 1 up to 1e15 are
+    // then written without an exponent (2000, not 2e+03).
+    char buf[64];
+    const auto shortest = std::to_chars(buf, buf + sizeof buf, x);
+    std::string text(buf, shortest.ptr);
     const double magnitude = std::abs(x);
-    if (magnitude >= 1.0 && magnitude < 1e15) {
+    if (magnitude >= 1.0 && magnitude < 1e15 && text.find('e') != std::string::npos) {
         const int digits = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
-        if (digits > precision)
-            std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+        const auto fixed = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, digits);
+        text.assign(buf, fixed.ptr);
     }
-    return buf;
+    return text;
 }
 
 std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value)

@@ -4,7 +4,7 @@
 #include "../params.h"
 
 #include <array>
-#include <cstdio>
+#include <charconv>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -18,11 +18,26 @@ void writeTrajectoryHeader(std::ostream& out)
 
 void writeTrajectoryRows(std::ostream& out, const State& s)
 {
+    // "%.17g" as the contract asks, through std::to_chars so a locale's decimal comma
+    // never reaches the file.
     char line[256];
+    auto put = [&](char* at, double x) {
+        return std::to_chars(at, line + sizeof line, x, std::chars_format::general, 17).ptr;
+    };
     for (int i = 0; i < s.size(); ++i) {
-        const int n = std::snprintf(line, sizeof line, "%.17g,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", s.t, i,
-                                    s.p(0, i), s.p(1, i), s.p(2, i), s.v(0, i), s.v(1, i), s.v(2, i));
-        out.write(line, n);
+        char* at = put(line, s.t);
+        *at++ = ',';
+        at = std::to_chars(at, line + sizeof line, i).ptr;
+        for (int a = 0; a < 3; ++a) {
+            *at++ = ',';
+            at = put(at, s.p(a, i));
+        }
+        for (int a = 0; a < 3; ++a) {
+            *at++ = ',';
+            at = put(at, s.v(a, i));
+        }
+        *at++ = '\n';
+        out.write(line, at - line);
     }
 }
 
