@@ -32,7 +32,10 @@ void usage(std::ostream& out)
     out << "\nrun options: [--model report|physical] [--integrator NAME] [--impacts located|step-end]\n"
            "  [--broadphase grid|all-pairs] [--threads T] [--dt S] [--steps N | --t-end S]\n"
            "  [--set NAME=VALUE]... [--preset NAME|FILE] [--init FILE] [--every K] [--out FILE] [--summary]\n"
-           "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error.\n";
+           "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
+           "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
+           "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
+           "  valid) holds the states before it; 130 when interrupted.\n";
 }
 
 } // namespace

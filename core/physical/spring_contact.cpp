@@ -25,7 +25,7 @@ double SpringFloor::restoring(double y) const
 
 double SpringFloor::dampingRate(double y, double v) const
 {
-    if (!inContact(y) && !(y == 0.0 && v < 0.0))
+    if (!touching(y, v))
         return 0.0;
     if (law == ContactLaw::LinearSpring)
         return damping;
@@ -325,16 +325,18 @@ PointState contactSegment(Integrator integrator, const SpringFloor& f, PointStat
 {
     left = 0.0;
     const PointState end = springStep(integrator, f, s, dt);
-    if (f.inContact(end.y) || !std::isfinite(end.y) || !std::isfinite(end.v))
+    if (f.touching(end.y, end.v) || !std::isfinite(end.y) || !std::isfinite(end.v))
         return end;
     double lo = 0.0, yLo = s.y; // inside: yLo <= 0
     double hi = 1.0, yHi = end.y; // outside: yHi >= 0
     PointState inside = s;
     const double tolerance = 1e-14 * (std::abs(s.y) + dt * std::abs(s.v));
     for (int i = 0; i < 100 && hi - lo > 1e-15 && (lo == 0.0 || -inside.y > tolerance); ++i) {
-        const double frac = yHi > yLo ? (lo * yHi - hi * yLo) / (yHi - yLo) : 0.5 * (lo + hi);
+        double frac = yHi > yLo ? (lo * yHi - hi * yLo) / (yHi - yLo) : 0.5 * (lo + hi);
+        if (!(frac > lo && frac < hi)) // an end on y = 0 itself (the way in): bisect
+            frac = 0.5 * (lo + hi);
         const PointState at = springStep(integrator, f, s, frac * dt);
-        if (f.inContact(at.y)) {
+        if (f.touching(at.y, at.v)) {
             lo = frac, yLo = at.y, inside = at;
             yHi *= 0.5; // Illinois: keep the stale end from stalling the bracket
         } else {
@@ -350,15 +352,15 @@ PointState contactSegment(Integrator integrator, const SpringFloor& f, PointStat
 
 PointState springStepLocated(Integrator integrator, const SpringFloor& f, PointState s, double dt)
 {
-    if (!f.oneSided)
-        return springStep(integrator, f, s, dt);
+    if (!f.oneSided || (!f.touching(s.y, s.v) && !f.inContact(s.y + dt * s.v - 0.5 * f.g * dt * dt)))
+        return springStep(integrator, f, s, dt); // flight all step: the integrator's own
     double left = dt;
     // A step holds at most a few switches; the cap keeps a chattering ball from looping.
     for (int segment = 0; segment < 16 && left > 0.0; ++segment) {
-        if (!f.inContact(s.y)) {
+        if (!f.touching(s.y, s.v)) {
             const double tau = timeToFloor(s.y, s.v, f.g);
-            if (tau >= left) // flight to the end: the integrator's own step when it is the whole step
-                return segment == 0 ? springStep(integrator, f, s, left) : exactFlight(s, left, f.g);
+            if (tau >= left) // after an exit, flight to the end of the step
+                return exactFlight(s, left, f.g);
             s = {0.0, s.v - f.g * tau}; // exactly on the floor, on the way in
             left -= tau;
         }

@@ -36,6 +36,8 @@ struct SpringFloor {
     bool oneSided = true;
 
     bool inContact(double y) const { return !oneSided || y < 0.0; }
+    // In contact, counting a ball on y = 0 that moves in.
+    bool touching(double y, double v) const { return inContact(y) || (y == 0.0 && v < 0.0); }
     // y'' = restoring(y) - dampingRate(y, v) v: gravity and spring, and the dashpot, which
     // is linear in v for both laws. At y = 0 a ball moving in feels the dashpot (the linear
     // law's force jumps to -c_s v there), one moving out does not.
