@@ -22,6 +22,9 @@ const std::array commands{
     Command{"list", "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
     Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
+    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+                         "                            the stiff and extreme cases, one row per model and integrator",
+            stabilityCommand},
 };
 
 void usage(std::ostream& out)

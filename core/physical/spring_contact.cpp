@@ -102,7 +102,7 @@ HertzBounce dimensionlessHertzBounce(double alpha)
     };
     const double h = 1e-3;
     double x = 0.0, v = 1.0, s = 0.0;
-    while (s < 1e4) {
+    while (s < 200.0) { // tau is 3.2 at e = 1 and 12 at e = 0.002; beyond 200 counts as captured
         const double k1x = v, k1v = acc(x, v);
         const double k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v);
         const double k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v);
@@ -193,60 +193,59 @@ namespace {
 
 // Implicit stage of the theta-method: implicit Euler is theta = 1, implicit midpoint 1/2.
 // The stage (Y, V) = (y0 + theta dy, v0 + theta dv) with dy = dt V and dv = dt a(Y, V);
-// eliminating V = (Y - y0) / h, h = theta dt, leaves one equation in Y:
-//   R(Y) = (Y - y0) / h - v0 - h a(Y, (Y - y0) / h) = 0.
-// Returns the stage position Y.
+// with h = theta dt, Y = y0 + h V leaves one equation in the stage velocity:
+//   R(V) = V - v0 - h a(y0 + h V, V) = 0.
+// (Solving for V rather than Y keeps tiny steps exact: Y - y0 would lose h^2 g to round-off.)
 double solveStage(const SpringFloor& f, double y0, double v0, double h)
 {
-    // Free flight (a = -g) is linear: Y = y0 + h v0 - h^2 g.
-    const double yFree = y0 + h * v0 - h * h * f.g;
-    if (!f.inContact(yFree))
-        return yFree;
+    // Free flight (a = -g): V = v0 - h g.
+    const double vFree = v0 - h * f.g;
+    if (!f.inContact(y0 + h * vFree))
+        return vFree;
     if (f.law == ContactLaw::LinearSpring) {
         // The 2x2 linear system Y = y0 + h V, V = v0 + h (-g - k Y - c V), reduced:
-        // Y (1 + h c + h^2 k) = y0 (1 + h c) + h v0 - h^2 g.
-        const double y = (y0 * (1.0 + h * f.damping) + h * v0 - h * h * f.g) /
-                         (1.0 + h * f.damping + h * h * f.stiffness);
+        // V (1 + h c + h^2 k) = v0 - h g - h k y0.
+        const double v = (v0 - h * f.g - h * f.stiffness * y0) / (1.0 + h * f.damping + h * h * f.stiffness);
         // A one-sided spring whose solution lands above the floor has no root in contact
-        // either (the dashpot force jumps at y = 0): the stage ends on the floor.
-        return f.inContact(y) ? y : 0.0;
+        // either (the dashpot force jumps at y = 0): the stage ends on the floor, Y = 0.
+        return f.inContact(y0 + h * v) ? v : -y0 / h;
     }
-    // Hertz: R is continuous, R(0) = -yFree / h > 0 and R -> -inf as Y -> -inf. Bracket,
-    // then Newton safeguarded by bisection (R need not be monotone).
-    auto residual = [&](double y, double& slope) {
-        const double v = (y - y0) / h;
-        const double d = -y;
+    // Hertz: the contact is V < vEdge = -y0 / h; R is continuous, R(vEdge) = vEdge - vFree
+    // > 0 and R -> -inf as V -> -inf. Bracket, then Newton safeguarded by bisection (R
+    // need not be monotone).
+    auto residual = [&](double v, double& slope) {
+        const double d = std::max(-(y0 + h * v), 0.0);
         const double d4 = std::sqrt(std::sqrt(d));
-        // a_y = -(3/2) k d^(1/2) + (1/4) c d^(-3/4) v and a_v = -c d^(1/4), both at (Y, V).
+        // a_y = -(3/2) k d^(1/2) + (1/4) c d^(-3/4) v and a_v = -c d^(1/4), at (Y, V);
+        // dR/dV = 1 - h^2 a_y - h a_v.
         const double ay = -1.5 * f.stiffness * std::sqrt(d) + 0.25 * f.damping * v / (d4 * d4 * d4);
         const double av = -f.damping * d4;
-        slope = 1.0 / h - h * ay - av;
-        return v - v0 - h * f.acceleration(y, v);
+        slope = 1.0 - h * h * ay - h * av;
+        return v - v0 - h * f.acceleration(y0 + h * v, v);
     };
     double slope = 0.0;
-    double hi = 0.0;
-    double lo = yFree;
-    for (double span = std::max({std::abs(yFree), std::abs(y0), 1e-300}); residual(lo, slope) >= 0.0; span *= 2.0)
-        lo = yFree - span;
-    double y = lo;
+    double hi = -y0 / h;
+    double lo = vFree;
+    for (double span = std::max({std::abs(vFree), std::abs(hi), 1e-300}); residual(lo, slope) >= 0.0; span *= 2.0)
+        lo = vFree - span;
+    double v = lo;
     for (int i = 0; i < 200; ++i) {
-        const double r = residual(y, slope);
-        (r < 0.0 ? lo : hi) = y;
-        double next = y - r / slope;
+        const double r = residual(v, slope);
+        (r < 0.0 ? lo : hi) = v;
+        double next = v - r / slope;
         if (!(next > lo && next < hi) || !std::isfinite(next))
             next = 0.5 * (lo + hi);
-        if (std::abs(next - y) <= 1e-15 * std::max(std::abs(y), std::abs(y0)) || hi - lo <= 1e-15 * std::abs(lo))
+        const double scale = std::max({std::abs(v), std::abs(v0), h * f.g});
+        if (std::abs(next - v) <= 1e-15 * scale || hi - lo <= 1e-15 * scale)
             return next;
-        y = next;
+        v = next;
     }
-    return y;
+    return v;
 }
 
 PointState thetaStep(const SpringFloor& f, PointState s, double dt, double theta)
 {
-    const double h = theta * dt;
-    const double y = solveStage(f, s.y, s.v, h);
-    const double v = (y - s.y) / h;
+    const double v = solveStage(f, s.y, s.v, theta * dt);
     // y1 = y0 + dt V; v1 = v0 + dt a(Y, V) = v0 + (V - v0) / theta.
     return {s.y + dt * v, s.v + (v - s.v) / theta};
 }

@@ -9,10 +9,10 @@
 
 namespace ab::stability {
 
-double oscillatorGrowth(Integrator integrator, double h, long long steps)
+double oscillatorGrowth(Integrator integrator, double h, long long steps, double zeta)
 {
     // omega0 = 1, so dt = h; the same step code as the spring floor, acting on both sides.
-    physical::SpringFloor spring{physical::ContactLaw::LinearSpring, 1.0, 0.0, 0.0, false};
+    physical::SpringFloor spring{physical::ContactLaw::LinearSpring, 1.0, 2.0 * zeta, 0.0, false};
     physical::PointState s{1.0, 0.0};
     double largest = 1.0;
     for (long long i = 0; i < steps; ++i) {
@@ -27,7 +27,7 @@ double oscillatorGrowth(Integrator integrator, double h, long long steps)
 
 StabilityLimit measureStabilityLimit(Integrator integrator, const GrowthCriterion& c)
 {
-    auto stable = [&](double h) { return oscillatorGrowth(integrator, h, c.steps) <= c.growth; };
+    auto stable = [&](double h) { return oscillatorGrowth(integrator, h, c.steps, c.zeta) <= c.growth; };
     if (!stable(c.hMin))
         return {c.hMin, true, false};
     // Walk up by factors of 2 to the first unstable h, then bisect to 1e-7 relative.

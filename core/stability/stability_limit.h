@@ -15,10 +15,12 @@ struct GrowthCriterion {
     double growth = 10.0;
     double hMin = 1e-4; // the search range of h
     double hMax = 1e4;
+    double zeta = 0.0; // damping ratio of the oscillator (0: undamped, the textbook case)
 };
 
-// The largest amplitude ratio over the run at h = dt omega0 (infinite once non-finite).
-double oscillatorGrowth(Integrator integrator, double h, long long steps);
+// The largest amplitude ratio over the run at h = dt omega0 (infinite once non-finite),
+// on y'' = -omega0^2 y - 2 zeta omega0 y'.
+double oscillatorGrowth(Integrator integrator, double h, long long steps, double zeta = 0.0);
 
 struct StabilityLimit {
     double h = 0.0;            // largest stable h found (hMin when unstable already there)
