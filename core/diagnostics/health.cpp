@@ -209,9 +209,11 @@ struct HealthCheck::Impl {
         return "use a smaller --dt";
     }
 
-    bool checkFinite(const State& a)
+    // A state is non-finite when a number in it is, or when its energy overflows (a speed
+    // beyond 1e154): nothing after it can be shown.
+    bool checkFinite(const State& a, double e)
     {
-        if (std::isfinite(a.t) && a.p.allFinite() && a.v.allFinite())
+        if (std::isfinite(a.t) && a.p.allFinite() && a.v.allFinite() && std::isfinite(e))
             return true;
         fig.nonfinite = true;
         raise(Kind::NonFinite, Health::Failed, [&](std::string& what, std::string& advice) {
@@ -221,7 +223,7 @@ struct HealthCheck::Impl {
         return false;
     }
 
-    void checkEnergy(const State& a)
+    void checkEnergy(const State& a, double e)
     {
         if (!(energyScale > 0.0))
             return; // no gravity and no motion: nothing can gain energy
@@ -229,7 +231,7 @@ struct HealthCheck::Impl {
         // integrator's error in the stored energy comes and goes with the step.
         if (spring && a.p(1, 0) < 0.0)
             return;
-        const double gain = (energy(a) - e0) / energyScale;
+        const double gain = (e - e0) / energyScale;
         fig.maxEnergyGain = std::max(fig.maxEnergyGain, gain);
         if (gain <= 1e-6)
             return;
@@ -460,7 +462,8 @@ struct HealthCheck::Impl {
         level = Health::Ok;
         t = a.t;
         ++fig.steps;
-        if (!checkFinite(a))
+        const double e = energy(a);
+        if (!checkFinite(a, e))
             return level;
         if (escapedBall.size() != static_cast<std::size_t>(a.size()))
             escapedBall.assign(static_cast<std::size_t>(a.size()), 0);
@@ -468,7 +471,7 @@ struct HealthCheck::Impl {
             checkPlace(b, a, i);
             checkStuck(b, a, i);
         }
-        checkEnergy(a);
+        checkEnergy(a, e);
         checkPairs(b, a);
         return level;
     }
@@ -495,6 +498,10 @@ const std::vector<HealthStatus>& HealthCheck::issues() const
 
 HealthStatus HealthCheck::worst() const
 {
+    if (impl_->fig.nonfinite) // what stopped the run
+        for (const HealthStatus& s : impl_->issues)
+            if (s.what.rfind("the state became non-finite", 0) == 0)
+                return s;
     for (Health level : {Health::Failed, Health::Warning})
         for (const HealthStatus& s : impl_->issues)
             if (s.level == level)

@@ -5,7 +5,7 @@
 // non-finite state is shown.
 //
 // Checks, on each pair of consecutive final states:
-//  1. non-finite positions or velocities (failed);
+//  1. non-finite positions or velocities, or an energy that overflows (failed);
 //  2. a centre beyond the floor or a wall: within one step's travel it is an impact found
 //     late (warning), deeper it has left the box (failed); on the spring floor the
 //     allowance is twice the compression the start energy allows;
@@ -67,7 +67,8 @@ public:
     const HealthFigures& figures() const;
     // Each kind of problem met, once, at its first occurrence, in time order.
     const std::vector<HealthStatus>& issues() const;
-    // The first failure, else the first warning, else an ok status.
+    // The non-finite state that stopped a run, else the first failure, else the first
+    // warning, else an ok status.
     HealthStatus worst() const;
 
 private:
