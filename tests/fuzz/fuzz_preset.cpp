@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target: the preset reader. Whatever the bytes, parsePreset either returns a
 // preset that writes back to JSON and reads again as the same preset, or throws
-// InputError with a one-line message. Any other exception, a crash or a sanitizer report
-// is a bug.
+// InputError with a message. Any other exception, a crash or a sanitizer report is a bug.
 #include "core/io/preset.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <string>
 #include <string_view>
 
 namespace {
@@ -28,8 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         preset = ab::parsePreset(json, "fuzz input");
     } catch (const ab::InputError& e) {
-        const std::string message = e.what();
-        require(!message.empty() && message.find('\n') == std::string::npos);
+        require(*e.what() != '\0');
         return 0;
     }
     require(ab::parsePreset(ab::presetToJson(preset), "written back") == preset);
