@@ -218,7 +218,7 @@ void writeLimits(std::ostream& out)
         }
         out << " | ";
         if (i == Integrator::Euler)
-            out << "0: |1 + i h| > 1 for every h";
+            out << "0: abs(1 + i h) > 1 for every h";
         else if (std::isfinite(theory))
             out << figure(theory);
         else
