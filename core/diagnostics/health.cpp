@@ -162,8 +162,7 @@ struct HealthCheck::Impl {
 
     // Records a problem the first time its kind is met at this level; the text is built
     // only then.
-    template <typename Describe>
-    void raise(Kind kind, Health h, Describe describe)
+    template <typename Describe> void raise(Kind kind, Health h, Describe describe)
     {
         level = std::max(level, h);
         bool& first = seen[static_cast<std::size_t>(kind)][static_cast<std::size_t>(h)];
@@ -285,8 +284,8 @@ struct HealthCheck::Impl {
                               (report && spec.scene == SceneId::ManyBalls ? r : 0.0);
         if (where.depth > travel + tolerance) {
             escape(i, [&] {
-                return "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) + at() +
-                       " (left the box)" + escapeCause(b, i, where);
+                return "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) +
+                       at() + " (left the box)" + escapeCause(b, i, where);
             });
             return;
         }
@@ -314,8 +313,7 @@ struct HealthCheck::Impl {
         return {};
     }
 
-    template <typename Describe>
-    void escape(int i, Describe describe)
+    template <typename Describe> void escape(int i, Describe describe)
     {
         if (!escapedBall[static_cast<std::size_t>(i)]) {
             escapedBall[static_cast<std::size_t>(i)] = 1;
@@ -331,8 +329,8 @@ struct HealthCheck::Impl {
     {
         // Appendix D moves only balls above the floor: one resting on it that is hit keeps
         // its new velocity and never moves again.
-        if (!(report && spec.scene == SceneId::ManyBalls) || b.p(1, i) > walls.lo.y() ||
-            a.p.col(i) != b.p.col(i) || a.v.col(i).isZero())
+        if (!(report && spec.scene == SceneId::ManyBalls) || b.p(1, i) > walls.lo.y() || a.p.col(i) != b.p.col(i) ||
+            a.v.col(i).isZero())
             return;
         raise(Kind::Stuck, Health::Warning, [&](std::string& what, std::string& advice) {
             what = "ball " + std::to_string(i) + " lies on the floor with speed " + num(a.v.col(i).norm()) + at() +
@@ -399,8 +397,7 @@ struct HealthCheck::Impl {
         if (!(scale > 0.0))
             return;
         const Eigen::Vector3d gravity(0.0, -2.0 * g * dt, 0.0);
-        const double error =
-            ((a.v.col(0) + a.v.col(1)) - (b.v.col(0) + b.v.col(1)) - gravity).norm() / scale;
+        const double error = ((a.v.col(0) + a.v.col(1)) - (b.v.col(0) + b.v.col(1)) - gravity).norm() / scale;
         fig.maxMomentumError = std::max(fig.maxMomentumError.value_or(0.0), error);
         if (error <= 1e-9)
             return;

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -166,7 +166,8 @@ double maxCompression(const SpringFloor& floor, double energy)
         return (floor.g + std::sqrt(floor.g * floor.g + 2.0 * floor.stiffness * energy)) / floor.stiffness;
     // 2/5 k_h d^(5/2) - g d = E: convex in d and negative at 0, so bisect on a bracket.
     auto excess = [&](double d) { return 0.4 * floor.stiffness * d * d * std::sqrt(d) - floor.g * d - energy; };
-    double hi = std::max(std::pow(2.5 * energy / floor.stiffness, 0.4), std::pow(2.5 * floor.g / floor.stiffness, 2.0 / 3.0));
+    double hi =
+        std::max(std::pow(2.5 * energy / floor.stiffness, 0.4), std::pow(2.5 * floor.g / floor.stiffness, 2.0 / 3.0));
     if (!(hi > 0.0))
         return 0.0;
     while (excess(hi) < 0.0)
@@ -326,7 +327,7 @@ PointState contactSegment(Integrator integrator, const SpringFloor& f, PointStat
     const PointState end = springStep(integrator, f, s, dt);
     if (f.touching(end.y, end.v) || !std::isfinite(end.y) || !std::isfinite(end.v))
         return end;
-    double lo = 0.0, yLo = s.y; // inside: yLo <= 0
+    double lo = 0.0, yLo = s.y;   // inside: yLo <= 0
     double hi = 1.0, yHi = end.y; // outside: yHi >= 0
     PointState inside = s;
     const double tolerance = 1e-14 * (std::abs(s.y) + dt * std::abs(s.v));

@@ -59,7 +59,7 @@ double theoreticalLimit(Integrator integrator)
     case Integrator::Rk4:
         // |R(i h)|^2 = 1 - h^6 / 72 + h^8 / 576 <= 1 while h^2 <= 8.
         return 2.0 * std::numbers::sqrt2;
-    case Integrator::ImplicitEuler:   // |1 / (1 - i h)| = 1 / sqrt(1 + h^2) < 1
+    case Integrator::ImplicitEuler:    // |1 / (1 - i h)| = 1 / sqrt(1 + h^2) < 1
     case Integrator::ImplicitMidpoint: // |(1 + i h / 2) / (1 - i h / 2)| = 1
     case Integrator::Event:
         break;

@@ -23,7 +23,7 @@ struct GrowthCriterion {
 double oscillatorGrowth(Integrator integrator, double h, long long steps, double zeta = 0.0);
 
 struct StabilityLimit {
-    double h = 0.0;            // largest stable h found (hMin when unstable already there)
+    double h = 0.0;                  // largest stable h found (hMin when unstable already there)
     bool unstableEverywhere = false; // unstable at hMin already
     bool stableEverywhere = false;   // stable up to hMax: no limit in range
 };

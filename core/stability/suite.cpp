@@ -170,8 +170,8 @@ void writeCsv(std::ostream& out, const std::vector<RowResult>& rows)
         out << r.caseName << ',' << r.model << ',' << r.integrator << ',' << figure(f.maxEnergyGain) << ','
             << figure(f.maxPenetration) << ',' << f.escaped << ',' << (f.nonfinite ? 1 : 0) << ',' << r.verdict << ','
             << optionalFigure(f.maxMomentumError) << ',' << optionalFigure(f.maxOverlap) << ','
-            << optionalFigure(r.referenceError) << ',' << f.steps << ',' << figure(r.cpuSeconds) << ','
-            << figure(r.dt) << ',' << csvField(r.setting) << ',' << csvField(r.note) << '\n';
+            << optionalFigure(r.referenceError) << ',' << f.steps << ',' << figure(r.cpuSeconds) << ',' << figure(r.dt)
+            << ',' << csvField(r.setting) << ',' << csvField(r.note) << '\n';
     }
 }
 
@@ -211,8 +211,8 @@ void writeLimits(std::ostream& out)
         } else if (i == Integrator::Euler) {
             const GrowthCriterion longer{100'000, c.growth, 1e-6, c.hMax, 0.0};
             out << figure(limit.h) << " over " << c.steps << " steps, " << figure(measureStabilityLimit(i, longer).h)
-                << " over " << longer.steps << " (sqrt(G^(2/n) - 1): " << figure(expectedMeasuredLimit(i, c))
-                << " and " << figure(expectedMeasuredLimit(i, longer)) << ")";
+                << " over " << longer.steps << " (sqrt(G^(2/n) - 1): " << figure(expectedMeasuredLimit(i, c)) << " and "
+                << figure(expectedMeasuredLimit(i, longer)) << ")";
         } else {
             out << figure(limit.h) << " (" << figure(100.0 * (limit.h - theory) / theory) << "% from theory)";
         }
@@ -239,12 +239,12 @@ void writeMarkdown(std::ostream& out, const std::vector<RowResult>& rows)
         const std::string verdict = ran(r) ? r.verdict : r.outcome == RowOutcome::Skipped ? "skipped" : "n/a";
         out << "| " << r.caseName << " | " << r.model << " | " << r.integrator << " | " << markdownCell(r.setting)
             << " | " << figure(r.dt) << " | " << (figures ? figure(f.maxEnergyGain) : "") << " | "
-            << (figures ? figure(f.maxPenetration) : "") << " | " << (figures ? std::to_string(f.escaped) : "")
-            << " | " << (figures ? (f.nonfinite ? "yes" : "no") : "") << " | "
+            << (figures ? figure(f.maxPenetration) : "") << " | " << (figures ? std::to_string(f.escaped) : "") << " | "
+            << (figures ? (f.nonfinite ? "yes" : "no") : "") << " | "
             << (figures ? optionalFigure(f.maxMomentumError) : "") << " | "
-            << (figures ? optionalFigure(r.referenceError) : "") << " | "
-            << (figures ? std::to_string(f.steps) : "") << " | " << (figures ? figure(r.cpuSeconds) : "") << " | "
-            << verdict << " | " << markdownCell(r.note) << " |\n";
+            << (figures ? optionalFigure(r.referenceError) : "") << " | " << (figures ? std::to_string(f.steps) : "")
+            << " | " << (figures ? figure(r.cpuSeconds) : "") << " | " << verdict << " | " << markdownCell(r.note)
+            << " |\n";
     }
 }
 

@@ -81,8 +81,8 @@ private slots:
         QTemporaryDir dir;
         const std::string csv = dir.filePath("s.csv").toStdString();
         const std::string md = dir.filePath("s.md").toStdString();
-        const Result r = cli({"stability", "--case", "plastic", "--case", "extreme-constants", "--out", csv,
-                              "--markdown", md});
+        const Result r =
+            cli({"stability", "--case", "plastic", "--case", "extreme-constants", "--out", csv, "--markdown", md});
         QCOMPARE(r.status, 0);
         QVERIFY(r.out.find("plastic") != std::string::npos);
         QVERIFY(r.out.find("rows:") != std::string::npos);
@@ -99,8 +99,8 @@ private slots:
     {
         const Result r = cli({"stability", "--list"});
         QCOMPARE(r.status, 0);
-        for (const char* name : {"stiff-spring", "coarse-step", "energy-drift", "zeno-0.99", "tiny-step",
-                                 "tunnelling", "dense-packing", "degenerate", "extreme-constants"})
+        for (const char* name : {"stiff-spring", "coarse-step", "energy-drift", "zeno-0.99", "tiny-step", "tunnelling",
+                                 "dense-packing", "degenerate", "extreme-constants"})
             QVERIFY2(r.out.find(name) != std::string::npos, name);
     }
 

@@ -120,9 +120,8 @@ private slots:
     {
         // A ball sliding on the floor takes the floor branch every step (Appendix B checks
         // the floor first), so it rolls through the wall at x = 300.
-        const Checked c = runChecked(testing::spec(SceneId::Box3d, {"p0=290,0,150", "v0=50,0,0", "k=0.5",
-                                                                    "max_bounces=1000000"}),
-                                     100);
+        const Checked c = runChecked(
+            testing::spec(SceneId::Box3d, {"p0=290,0,150", "v0=50,0,0", "k=0.5", "max_bounces=1000000"}), 100);
         QCOMPARE(c.health->figures().escaped, 1);
         QCOMPARE(c.health->worst().level, Health::Failed);
         QVERIFY(mentions(*c.health, "the floor first (Appendix B)"));
@@ -133,9 +132,9 @@ private slots:
         // Without gravity: z1 = 100 + 0.3, z2 = 102.01 - 0.1, 1.61 apart: swap to -9.5 and
         // 28.5 (e = 0.95), so the momentum 20 becomes 19: |dp| / (|v1| + |v2|) = 1 / 40.
         // Next step they are 1.99 apart, still overlapping: the swap repeats.
-        const Checked c = runChecked(testing::spec(SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,102.01",
-                                                                       "v1=0,0,30", "v2=0,0,-10"}),
-                                     2);
+        const Checked c = runChecked(
+            testing::spec(SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,102.01", "v1=0,0,30", "v2=0,0,-10"}),
+            2);
         const auto& f = c.health->figures();
         QVERIFY(f.maxMomentumError && std::abs(*f.maxMomentumError - 1.0 / 40.0) <= 1e-12);
         QVERIFY(f.maxOverlap && std::abs(*f.maxOverlap - 0.39) <= 1e-9);

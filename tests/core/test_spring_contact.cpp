@@ -104,7 +104,8 @@ private slots:
     {
         // tau = 2 x_max I, x_max = (5/4)^(2/5) from 1/2 = 2/5 x^(5/2), and
         // I = int_0^1 (1 - u^(5/2))^(-1/2) du = sqrt(pi) Gamma(7/5) / Gamma(9/10).
-        const double tau = 2.0 * std::pow(1.25, 0.4) * std::sqrt(std::numbers::pi) * std::tgamma(1.4) / std::tgamma(0.9);
+        const double tau =
+            2.0 * std::pow(1.25, 0.4) * std::sqrt(std::numbers::pi) * std::tgamma(1.4) / std::tgamma(0.9);
         QVERIFY(std::abs(tau - 3.2181) < 1e-4);
         QVERIFY(std::abs(hertzDampingForRestitution(1.0).tau - tau) < 1e-5);
         QCOMPARE(hertzDampingForRestitution(1.0).alpha, 0.0);
@@ -125,7 +126,8 @@ private slots:
         const double design = 5.0; // the speed the stiffness is chosen for
         const SpringFloor floor = hertzFloorFromContactTime(e, tc, design, 0.0);
         const Bounce atDesign = integrateOneContact(floor, design, tc / 20000.0);
-        QVERIFY2(std::abs(atDesign.exitSpeed - e * design) <= 2e-4 * design, qPrintable(QString::number(atDesign.exitSpeed)));
+        QVERIFY2(std::abs(atDesign.exitSpeed - e * design) <= 2e-4 * design,
+                 qPrintable(QString::number(atDesign.exitSpeed)));
         QVERIFY2(std::abs(atDesign.duration - tc) <= 1e-3 * tc, qPrintable(QString::number(atDesign.duration)));
         // Tsuji's damping makes e independent of the speed; t_c scales as u^(-1/5).
         const Bounce slow = integrateOneContact(floor, design / 32.0, tc / 20000.0);
@@ -210,10 +212,10 @@ private slots:
         QFETCH(int, contact);
         QFETCH(QString, stiffness);
         for (Integrator method : {Integrator::ImplicitEuler, Integrator::ImplicitMidpoint}) {
-            RunSpec s = testing::spec(SceneId::Bounce1d,
-                                      {"contact=" + std::to_string(contact), "stiffness=" + stiffness.toStdString(),
-                                       "h0=10", "k=0.8"},
-                                      ModelKind::Physical);
+            RunSpec s = testing::spec(
+                SceneId::Bounce1d,
+                {"contact=" + std::to_string(contact), "stiffness=" + stiffness.toStdString(), "h0=10", "k=0.8"},
+                ModelKind::Physical);
             s.integrator = method;
             s.dt = 0.5; // dt omega0 from ~1.6 to ~1.6e4
             const SpringFloor floor = springFloorFor(s);
@@ -249,16 +251,15 @@ private slots:
         // restitution is k); gravity during the contact shifts it by O(g t_c / u) ~ 0.5%.
         QFETCH(int, integrator);
         QFETCH(int, contact);
-        RunSpec s = testing::spec(SceneId::Bounce1d, {"contact=" + std::to_string(contact), "contact_time=0.002",
-                                                      "g=9.82", "h0=1", "k=0.7"},
-                                  ModelKind::Physical);
+        RunSpec s = testing::spec(
+            SceneId::Bounce1d, {"contact=" + std::to_string(contact), "contact_time=0.002", "g=9.82", "h0=1", "k=0.7"},
+            ModelKind::Physical);
         s.integrator = static_cast<Integrator>(integrator);
         // First-order methods need finer steps: explicit Euler gains and implicit Euler
         // loses energy at every step in the contact (dt omega0 ~ 1e-4 and 1e-3 here), and
         // symplectic Euler's damping is first order (dt omega0 ~ 6e-3; 0.06 for the rest).
-        const std::map<Integrator, double> steps{{Integrator::Euler, 2e-7},
-                                                 {Integrator::ImplicitEuler, 2e-6},
-                                                 {Integrator::SymplecticEuler, 1e-5}};
+        const std::map<Integrator, double> steps{
+            {Integrator::Euler, 2e-7}, {Integrator::ImplicitEuler, 2e-6}, {Integrator::SymplecticEuler, 1e-5}};
         s.dt = steps.count(s.integrator) ? steps.at(s.integrator) : 1e-4;
         const double top = firstRebound(s, static_cast<long long>(0.9 / *s.dt));
         QVERIFY2(std::abs(top - 0.49) <= 0.02 * 0.49, qPrintable(QString::number(top)));
@@ -271,8 +272,8 @@ private slots:
         // y1 = y0 + dt vm, v1 = v0 + dt a(ym, vm) with (ym, vm) the averages.
         const SpringFloor floor = hertzFloorFromContactTime(0.6, 0.5, 4.0, 9.82);
         for (double dt : {1e-3, 0.05, 0.4}) {
-            for (const PointState s0 : {PointState{0.01, -4.0}, PointState{-0.05, -2.0}, PointState{-0.2, 3.0},
-                                        PointState{-1e-6, 0.5}}) {
+            for (const PointState s0 :
+                 {PointState{0.01, -4.0}, PointState{-0.05, -2.0}, PointState{-0.2, 3.0}, PointState{-1e-6, 0.5}}) {
                 const PointState ie = springStep(Integrator::ImplicitEuler, floor, s0, dt);
                 QVERIFY(std::abs(ie.y - (s0.y + dt * ie.v)) <= 1e-12 * (std::abs(s0.y) + dt * std::abs(ie.v)));
                 QVERIFY(std::abs(ie.v - (s0.v + dt * floor.acceleration(ie.y, ie.v))) <= 1e-9 * std::abs(s0.v));

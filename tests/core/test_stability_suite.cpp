@@ -55,7 +55,8 @@ private slots:
         const auto rows = runCase(name.toStdString(), 20'000);
         QVERIFY(!rows.empty());
         for (const RowResult& r : rows) {
-            const QString where = QString::fromStdString(r.caseName + " " + r.model + " " + r.integrator + " " + r.setting);
+            const QString where =
+                QString::fromStdString(r.caseName + " " + r.model + " " + r.integrator + " " + r.setting);
             switch (r.outcome) {
             case RowOutcome::Ran:
                 QVERIFY2(r.verdict == "ok" || r.verdict == "degraded" || r.verdict == "failed", qPrintable(where));
@@ -99,7 +100,8 @@ private slots:
             const bool stepEnd = r.setting.rfind("step-end, linear stiffness 1e1,", 0) == 0 ||
                                  r.setting.rfind("step-end, linear stiffness 1e3,", 0) == 0;
             const QString where = QString::fromStdString(r.integrator + " " + r.setting + ": " + r.note);
-            if (r.integrator == "implicit-euler" || (r.integrator == "implicit-midpoint" && r.setting.rfind("located", 0) == 0)) {
+            if (r.integrator == "implicit-euler" ||
+                (r.integrator == "implicit-midpoint" && r.setting.rfind("located", 0) == 0)) {
                 // Bounded at every stiffness and step tried.
                 QVERIFY2(r.verdict != "failed" && !r.figures.nonfinite && r.figures.escaped == 0, qPrintable(where));
                 continue;
