@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Installs what a fresh Debian 12 machine lacks (apt-get, as root or through sudo) and
 # builds Amazeballs into build/. Safe to run again: it installs only what is missing and
-# rebuilds only what changed.
+# rebuilds only what changed. AMAZEBALLS_BUILD_DIR builds elsewhere (build-asan, ...) and
+# AMAZEBALLS_EXTRA_PACKAGES names more packages to install (clang for the fuzz targets).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libeigen3-dev libgl-dev
   xvfb xauth libgl1-mesa-dri fontconfig fonts-dejavu-core)
+read -r -a extra <<< "${AMAZEBALLS_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
+build_dir=${AMAZEBALLS_BUILD_DIR:-build}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,5 +30,5 @@ fi
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@" >/dev/null
-cmake --build build -j "$(nproc)"
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@" >/dev/null
+cmake --build "$build_dir" -j "$(nproc)"

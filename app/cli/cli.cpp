@@ -22,6 +22,9 @@ const std::array commands{
     Command{"list", "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
     Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
+    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+                         "                            the stiff and extreme cases, one row per model and integrator",
+            stabilityCommand},
 };
 
 void usage(std::ostream& out)
@@ -32,7 +35,10 @@ void usage(std::ostream& out)
     out << "\nrun options: [--model report|physical] [--integrator NAME] [--impacts located|step-end]\n"
            "  [--broadphase grid|all-pairs] [--threads T] [--dt S] [--steps N | --t-end S]\n"
            "  [--set NAME=VALUE]... [--preset NAME|FILE] [--init FILE] [--every K] [--out FILE] [--summary]\n"
-           "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error.\n";
+           "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
+           "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
+           "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
+           "  valid) holds the states before it; 130 when interrupted.\n";
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "interrupt.h"
 #include "run_setup.h"
 
+#include "../../core/diagnostics/health.h"
 #include "../../core/io/atomic_file.h"
 #include "../../core/io/trajectory_csv.h"
 
@@ -71,9 +72,24 @@ struct Summary {
     }
 };
 
+// One line on stderr for the worst problem the health check met; a run that went
+// non-finite exits with status 3.
+int reportHealth(const diagnostics::HealthCheck& health, bool diverged, const State& last, const Simulation& sim,
+                 std::ostream& err)
+{
+    const diagnostics::HealthStatus worst = health.worst();
+    if (worst.level == diagnostics::Health::Ok)
+        return 0;
+    err << "amazeballs-cli: run: " << diagnostics::healthKey(worst.level) << ": " << worst.line();
+    if (diverged)
+        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " " << sim.scene().timeUnit;
+    err << "\n";
+    return diverged ? 3 : 0;
+}
+
 } // namespace
 
-int runCommand(Args& args, std::ostream& out, std::ostream&)
+int runCommand(Args& args, std::ostream& out, std::ostream& err)
 {
     const RunSetup setup = readRunSetup(args);
     const long long every = args.integer("every", 1, 1'000'000'000'000LL).value_or(1);
@@ -86,20 +102,28 @@ int runCommand(Args& args, std::ostream& out, std::ostream&)
         checkWritable(*outPath); // fail before a long run, not after
 
     Summary sum;
-    State last;
+    State last; // the last state written: a non-finite one never is
+    const State start = sim->start();
+    diagnostics::HealthCheck health(*sim, start);
+    bool diverged = false;
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
         if (csv)
             writeTrajectoryHeader(*csv);
-        last = runRecorded(
-            *sim, sim->start(), setup.steps, 1,
+        runRecorded(
+            *sim, start, setup.steps, 1,
             [&](const State& s) {
+                if (index > 0 && health.check(last, s) == diagnostics::Health::Failed && health.figures().nonfinite) {
+                    diverged = true; // stop before writing it
+                    return;
+                }
                 if (csv && index % every == 0)
                     writeTrajectoryRows(*csv, s);
                 sum.observe(s, index);
+                last = s;
                 ++index;
             },
-            interrupted);
+            [&] { return diverged || interrupted(); });
         throwIfInterrupted();
     };
     if (outPath)
@@ -108,7 +132,7 @@ int runCommand(Args& args, std::ostream& out, std::ostream&)
         simulate(summary ? nullptr : &out);
     if (summary)
         sum.print(out, *sim, last);
-    return 0;
+    return reportHealth(health, diverged, last, *sim, err);
 }
 
 } // namespace ab::cli

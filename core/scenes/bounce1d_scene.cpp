@@ -30,6 +30,16 @@ SceneInfo makeBounce1d()
         integer("max_bounces", "count_max", 10, 0, 1e9, "2.2.1",
                 "the report zeroes the ball once more than this many bounces have happened (against Zeno)",
                 ReportModel),
+        integer("contact", "contact", 0, 0, 2, "report 1.2",
+                "floor contact of the physical model: 0 impulse v1 = -k v0 (eq 2.3), 1 linear spring-dashpot, "
+                "2 Hertz spring with damping; springs take their damping from k",
+                PhysicalModel),
+        real("contact_time", "t_c", "step", 5.0, 1e-6, 1e6, "report 1.2",
+             "duration of one spring contact (contact 1 or 2); with k it sets stiffness and damping",
+             PhysicalModel),
+        real("stiffness", "k_s", "1/step^2", 0.0, 0.0, 1e12, "report 1.2",
+             "spring stiffness per unit mass (Hertz: per unit^1/2); 0 takes it from contact_time",
+             PhysicalModel),
     };
     s.equations = {
         {"2.1", "-g = dv/dt", "free flight: gravity is the only force"},
@@ -49,6 +59,10 @@ SceneInfo makeBounce1d()
                        "max_bounces the contact state and every later state are set to zero."},
         {"2.2.1", "The code counts time in steps (dt = 1) with gravity 0.0982 per step^2; the text's "
                   "g = 9.82 is the same physics with the step read as 0.1 s."},
+        {"1.2", "Before settling on a coefficient of restitution the report considered spring equations for the "
+                "bounce. The physical model offers them as `contact` 1 (y'' = -g - k_s y - c_s v below the floor) "
+                "and 2 (Hertz, y'' = -g + k_h d^1.5 - c_h d^0.25 v with d = -y); their damping gives the "
+                "restitution k and their stiffness the contact time t_c, and a stiff spring makes the ODE stiff."},
     };
     return s;
 }

@@ -1,0 +1,509 @@
+// SPDX-License-Identifier: MIT
+#include "health.h"
+
+#include "../physical/spring_contact.h"
+#include "../stability/stability_limit.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+
+namespace ab::diagnostics {
+
+std::string_view healthKey(Health h)
+{
+    switch (h) {
+    case Health::Ok:
+        return "ok";
+    case Health::Warning:
+        return "warning";
+    case Health::Failed:
+        return "failed";
+    }
+    return "failed";
+}
+
+std::string HealthStatus::line() const
+{
+    return advice.empty() ? what : what + "; " + advice;
+}
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+enum class Kind { NonFinite, Escaped, Penetration, Energy, Overlap, Tunnel, Momentum, RepeatedSwap, Stuck, Count };
+
+// Three significant figures for messages.
+std::string num(double x)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    return buf;
+}
+
+// Where a centre may be: the floor and the walls as limits on the centre, infinite where
+// the scene has no wall (bounce1d has only a floor; no scene has a ceiling). Walls are
+// checked at any height, as both models do.
+struct Walls {
+    Eigen::Vector3d lo;
+    Eigen::Vector3d hi;
+};
+
+Walls wallsOf(const RunSpec& spec)
+{
+    const ParamValues& p = spec.params;
+    switch (spec.scene) {
+    case SceneId::Bounce1d:
+        return {{-infinity, 0.0, -infinity}, {infinity, infinity, infinity}};
+    case SceneId::Box3d:
+        return {{0.0, 0.0, 0.0}, {p.real("box"), infinity, p.real("box")}};
+    case SceneId::TwoBalls: {
+        // The report's walls meet the centre; the physical model keeps centres r inside.
+        const double r = spec.model == ModelKind::Physical ? p.real("r") : 0.0;
+        return {{r, r, r}, {p.real("box") - r, infinity, p.real("box") - r}};
+    }
+    case SceneId::ManyBalls: {
+        const double limit = p.real("box") / 2.0 - p.real("r");
+        return {{-limit, -limit, -limit}, {limit, infinity, limit}};
+    }
+    }
+    throw std::logic_error("scene without walls");
+}
+
+// The wall a centre is furthest beyond, and by how much (0 when inside).
+struct Beyond {
+    double depth = 0.0;
+    int axis = 1;
+    bool low = true;
+};
+
+Beyond beyond(const Walls& w, const Eigen::Vector3d& p)
+{
+    Beyond b;
+    for (int a = 0; a < 3; ++a) {
+        if (w.lo[a] - p[a] > b.depth)
+            b = {w.lo[a] - p[a], a, true};
+        if (p[a] - w.hi[a] > b.depth)
+            b = {p[a] - w.hi[a], a, false};
+    }
+    return b;
+}
+
+// Closest distance between two balls moving in straight lines over the step (s in [0, 1]).
+double closestApproach(const Eigen::Vector3d& d0, const Eigen::Vector3d& d1)
+{
+    const Eigen::Vector3d m = d1 - d0;
+    const double mm = m.squaredNorm();
+    const double s = mm > 0.0 ? std::clamp(-d0.dot(m) / mm, 0.0, 1.0) : 0.0;
+    return (d0 + s * m).norm();
+}
+
+} // namespace
+
+struct HealthCheck::Impl {
+    const Simulation& sim;
+    const RunSpec& spec;
+    bool report;
+    double dt, g, r;
+    Walls walls;
+    double tolerance; // round-off allowance on lengths
+    std::optional<physical::SpringFloor> spring;
+    double springAllowance = infinity;
+    double e0 = 0.0;
+    double energyScale = 0.0;
+    HealthFigures fig;
+    std::vector<HealthStatus> issues;
+    std::array<std::array<bool, 3>, static_cast<std::size_t>(Kind::Count)> seen{};
+    std::vector<char> escapedBall;
+    Health level = Health::Ok; // of the step being checked
+    double t = 0.0;            // of the state being checked
+    long long pairChecks = 0;
+
+    Impl(const Simulation& s, const State& start)
+        : sim(s), spec(s.spec()), report(spec.model == ModelKind::Report), dt(s.dt()), g(spec.params.real("g")),
+          r(spec.params.indexOf("r") ? spec.params.real("r") : 0.0), walls(wallsOf(spec))
+    {
+        double scale = 1.0;
+        for (int a = 0; a < 3; ++a)
+            if (std::isfinite(walls.hi[a]) && std::isfinite(walls.lo[a]))
+                scale = std::max(scale, walls.hi[a] - walls.lo[a]);
+        if (start.size() > 0 && start.p.allFinite())
+            scale = std::max(scale, start.p.cwiseAbs().maxCoeff());
+        tolerance = 1e-9 * scale;
+        if (spec.scene == SceneId::Bounce1d && !report &&
+            physical::contactLawOf(spec) != physical::ContactLaw::Impulse) {
+            spring = physical::springFloorFor(spec);
+        }
+        e0 = energy(start);
+        // Gains are relative to the start energy, or to that of a ball raised by the
+        // scene's size when the start holds less (a ball at rest on the floor).
+        energyScale = std::max(e0, g * scale * std::max(start.size(), 1));
+        if (spring)
+            springAllowance = 2.0 * physical::maxCompression(*spring, e0);
+        escapedBall.assign(static_cast<std::size_t>(start.size()), 0);
+    }
+
+    double potential(double y) const { return spring ? spring->potential(y) : g * (y - walls.lo.y()); }
+
+    double energy(const State& s) const
+    {
+        double e = 0.0;
+        for (int i = 0; i < s.size(); ++i)
+            e += 0.5 * s.v.col(i).squaredNorm() + potential(s.p(1, i));
+        return e;
+    }
+
+    std::string at() const { return " at t = " + num(t) + " " + sim.scene().timeUnit; }
+    std::string length(double x) const { return num(x) + " " + sim.scene().lengthUnit; }
+
+    // Records a problem the first time its kind is met at this level; the text is built
+    // only then.
+    template <typename Describe> void raise(Kind kind, Health h, Describe describe)
+    {
+        level = std::max(level, h);
+        bool& first = seen[static_cast<std::size_t>(kind)][static_cast<std::size_t>(h)];
+        if (first)
+            return;
+        first = true;
+        HealthStatus status{h, {}, {}, t};
+        describe(status.what, status.advice);
+        issues.push_back(std::move(status));
+    }
+
+    // What to change when the method itself misbehaves (energy, divergence).
+    std::string methodAdvice() const
+    {
+        if (report)
+            return "the report's own rule; a smaller --dt shrinks it, --model physical avoids it";
+        const Integrator i = spec.integrator;
+        if (spring) {
+            const double omega = physical::contactFrequency(*spring, e0);
+            const double limit = stability::theoreticalLimit(i);
+            if (i == Integrator::Euler)
+                return "explicit Euler gains energy at every step on a spring (dt omega0 = " + num(dt * omega) +
+                       "): use symplectic-euler, verlet, rk4 or implicit-euler";
+            if (std::isfinite(limit))
+                return "dt omega0 = " + num(dt * omega) + " and " + std::string(integratorKey(i)) +
+                       " is stable only below " + num(limit) + ": use --dt below " + num(limit / omega) +
+                       " or implicit-euler";
+            return "use a smaller --dt";
+        }
+        if (i == Integrator::Euler)
+            return "explicit Euler adds energy at every step: use symplectic-euler, verlet or event";
+        return "use a smaller --dt";
+    }
+
+    std::string impactAdvice() const
+    {
+        if (report && spec.scene == SceneId::ManyBalls)
+            return "the report's own rule, one update per frame; --model physical avoids it";
+        if (report)
+            return "the report finds impacts only at the end of a step; a smaller --dt shrinks it";
+        if (spec.impacts == ImpactMode::StepEnd)
+            return "use --impacts located or a smaller --dt";
+        return "use a smaller --dt";
+    }
+
+    // A state is non-finite when a number in it is, or when its energy overflows (a speed
+    // beyond 1e154): nothing after it can be shown.
+    bool checkFinite(const State& a, double e)
+    {
+        if (std::isfinite(a.t) && a.p.allFinite() && a.v.allFinite() && std::isfinite(e))
+            return true;
+        fig.nonfinite = true;
+        raise(Kind::NonFinite, Health::Failed, [&](std::string& what, std::string& advice) {
+            what = "the state became non-finite (overflow)" + at();
+            advice = methodAdvice();
+        });
+        return false;
+    }
+
+    void checkEnergy(const State& a, double e)
+    {
+        if (!(energyScale > 0.0))
+            return; // no gravity and no motion: nothing can gain energy
+        // On the spring floor the energy is compared in flight: inside the spring the
+        // integrator's error in the stored energy comes and goes with the step.
+        if (spring && a.p(1, 0) < 0.0)
+            return;
+        const double gain = (e - e0) / energyScale;
+        fig.maxEnergyGain = std::max(fig.maxEnergyGain, gain);
+        if (gain <= 1e-6)
+            return;
+        raise(Kind::Energy, gain > 0.1 ? Health::Failed : Health::Warning, [&](std::string& what, std::string& advice) {
+            what = "energy " + num(100.0 * gain) + "% above its start" + at() + energyCause();
+            advice = methodAdvice();
+        });
+    }
+
+    std::string energyCause() const
+    {
+        if (!report)
+            return {};
+        switch (spec.scene) {
+        case SceneId::Bounce1d:
+            return " (eq 2.16 moves the position with the old velocity: explicit Euler adds g^2 dt^2 / 2 per step "
+                   "of flight)";
+        case SceneId::Box3d:
+        case SceneId::TwoBalls:
+            return " (the floor rule v' = -k v - g dt of Appendix B adds a step of gravity to each rebound)";
+        case SceneId::ManyBalls:
+            return " (Appendix D's push of one radius along the normal and its extra gravity at a side wall)";
+        }
+        return {};
+    }
+
+    std::string wallName(const Beyond& b) const
+    {
+        if (b.axis == 1)
+            return "the floor";
+        const double face = b.low ? walls.lo[b.axis] : walls.hi[b.axis];
+        return std::string("the ") + "xyz"[b.axis] + " = " + num(face) + " wall";
+    }
+
+    void checkPlace(const State& b, const State& a, int i)
+    {
+        const Beyond where = beyond(walls, a.p.col(i));
+        fig.maxPenetration = std::max(fig.maxPenetration, where.depth);
+        if (where.depth <= tolerance)
+            return;
+        if (spring) {
+            if (where.depth > springAllowance)
+                escape(i, [&] {
+                    return "ball went " + length(where.depth) + " into the floor spring" + at() +
+                           ", twice deeper than its energy allows (fell through the floor)";
+                });
+            return;
+        }
+        // One step's travel, and for the report's stage 4 the push of one radius.
+        const double travel = dt * std::max(b.v.col(i).norm(), a.v.col(i).norm()) + g * dt * dt +
+                              (report && spec.scene == SceneId::ManyBalls ? r : 0.0);
+        if (where.depth > travel + tolerance) {
+            escape(i, [&] {
+                return "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) +
+                       at() + " (left the box)" + escapeCause(b, i, where);
+            });
+            return;
+        }
+        raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice) {
+            what = "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) + at() +
+                   pushCause();
+            advice = impactAdvice();
+        });
+    }
+
+    std::string pushCause() const
+    {
+        if (report && spec.scene == SceneId::ManyBalls)
+            return " (Appendix D pushes a colliding ball one radius along the normal without clamping it into the "
+                   "box; the next frame's wall check puts it back)";
+        return {};
+    }
+
+    std::string escapeCause(const State& b, int i, const Beyond& where) const
+    {
+        if (report && where.axis != 1 && (spec.scene == SceneId::Box3d || spec.scene == SceneId::TwoBalls) &&
+            b.p(1, i) <= 0.0)
+            return ": the report handles one face per step, the floor first (Appendix B), so a ball on the floor "
+                   "never meets a wall";
+        return {};
+    }
+
+    template <typename Describe> void escape(int i, Describe describe)
+    {
+        if (!escapedBall[static_cast<std::size_t>(i)]) {
+            escapedBall[static_cast<std::size_t>(i)] = 1;
+            ++fig.escaped;
+        }
+        raise(Kind::Escaped, Health::Failed, [&](std::string& what, std::string& advice) {
+            what = describe();
+            advice = spring ? methodAdvice() : impactAdvice();
+        });
+    }
+
+    void checkStuck(const State& b, const State& a, int i)
+    {
+        // Appendix D moves only balls above the floor: one resting on it that is hit keeps
+        // its new velocity and never moves again.
+        if (!(report && spec.scene == SceneId::ManyBalls) || b.p(1, i) > walls.lo.y() || a.p.col(i) != b.p.col(i) ||
+            a.v.col(i).isZero())
+            return;
+        raise(Kind::Stuck, Health::Warning, [&](std::string& what, std::string& advice) {
+            what = "ball " + std::to_string(i) + " lies on the floor with speed " + num(a.v.col(i).norm()) + at() +
+                   " but does not move: Appendix D updates only balls above the floor";
+            advice = "the report's own rule; --model physical avoids it";
+        });
+    }
+
+    void checkPair(const State& b, const State& a, int i, int j)
+    {
+        const double contact = 2.0 * r;
+        const Eigen::Vector3d d0 = b.p.col(i) - b.p.col(j);
+        const Eigen::Vector3d d1 = a.p.col(i) - a.p.col(j);
+        const double overlap = contact - d1.norm();
+        if (overlap > 1e-9 * r) {
+            fig.maxOverlap = std::max(fig.maxOverlap.value_or(0.0), overlap);
+            raise(Kind::Overlap, Health::Warning, [&](std::string& what, std::string& advice) {
+                what = "balls " + std::to_string(i) + " and " + std::to_string(j) + " overlap by " + length(overlap) +
+                       at();
+                advice = impactAdvice();
+            });
+            if (report && spec.scene == SceneId::TwoBalls && d0.norm() < contact)
+                raise(Kind::RepeatedSwap, Health::Warning, [&](std::string& what, std::string& advice) {
+                    what = "the balls still overlap after a swap" + at() +
+                           ": Appendix C swaps velocities with no test that the balls approach, so the swap repeats";
+                    advice = "the report's own rule; --model physical avoids it";
+                });
+        } else if (d0.norm() >= contact && freeFlight(b, a, i) && freeFlight(b, a, j) &&
+                   closestApproach(d0, d1) < contact - 1e-9 * r) {
+            // Both flew freely (equal gravity keeps their relative motion straight), yet
+            // the straight path crossed the contact distance: neither saw the other.
+            raise(Kind::Tunnel, Health::Failed, [&](std::string& what, std::string& advice) {
+                what = "balls " + std::to_string(i) + " and " + std::to_string(j) +
+                       " passed through each other within one step" + at() + " (closest approach " +
+                       length(closestApproach(d0, d1)) + ", contact at " + length(contact) + ")";
+                advice = impactAdvice();
+            });
+        }
+        fig.maxOverlap = std::max(fig.maxOverlap.value_or(0.0), 0.0);
+    }
+
+    // Only gravity changed the ball's velocity in the step: no wall, no other ball.
+    bool freeFlight(const State& b, const State& a, int i) const
+    {
+        const Eigen::Vector3d change = a.v.col(i) - b.v.col(i) + Eigen::Vector3d(0.0, g * dt, 0.0);
+        return change.norm() <= 1e-9 * (b.v.col(i).norm() + g * dt);
+    }
+
+    // Momentum of a two-ball contact: away from the walls only gravity changes it.
+    void checkMomentum(const State& b, const State& a)
+    {
+        const double contact = 2.0 * r;
+        const bool touching = (b.p.col(0) - b.p.col(1)).norm() < contact || (a.p.col(0) - a.p.col(1)).norm() < contact;
+        if (!touching)
+            return;
+        for (int i = 0; i < 2; ++i) {
+            const double travel = dt * std::max(b.v.col(i).norm(), a.v.col(i).norm()) + g * dt * dt;
+            for (const State* s : {&b, &a})
+                for (int axis = 0; axis < 3; ++axis)
+                    if (s->p(axis, i) - walls.lo[axis] <= travel || walls.hi[axis] - s->p(axis, i) <= travel)
+                        return; // a wall may have acted in this step: not measurable
+        }
+        const double scale = b.v.col(0).norm() + b.v.col(1).norm();
+        if (!(scale > 0.0))
+            return;
+        const Eigen::Vector3d gravity(0.0, -2.0 * g * dt, 0.0);
+        const double error = ((a.v.col(0) + a.v.col(1)) - (b.v.col(0) + b.v.col(1)) - gravity).norm() / scale;
+        fig.maxMomentumError = std::max(fig.maxMomentumError.value_or(0.0), error);
+        if (error <= 1e-9)
+            return;
+        raise(Kind::Momentum, Health::Warning, [&](std::string& what, std::string& advice) {
+            what = "momentum changed by " + num(100.0 * error) + "% of the pair's speeds in a contact" + at() +
+                   (report ? " (Appendix C scales both swapped velocities by e)" : "");
+            advice = report ? "the report's own rule; --model physical conserves momentum" : "use a smaller --dt";
+        });
+    }
+
+    void checkPairs(const State& b, const State& a)
+    {
+        const int n = a.size();
+        if (n < 2 || !(r > 0.0))
+            return;
+        if (n <= 256) {
+            for (int i = 0; i < n; ++i)
+                for (int j = i + 1; j < n; ++j)
+                    checkPair(b, a, i, j);
+            if (spec.scene == SceneId::TwoBalls)
+                checkMomentum(b, a);
+            return;
+        }
+        // Many balls: overlaps on a grid of cells 2r wide; every 10th step beyond 1e5.
+        if (n > 100'000 && pairChecks++ % 10 != 0)
+            return;
+        gridOverlaps(b, a);
+    }
+
+    void gridOverlaps(const State& b, const State& a)
+    {
+        const double cell = 2.0 * r;
+        const int n = a.size();
+        auto key = [&](int x, int y, int z) {
+            return (static_cast<std::uint64_t>(x & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
+                   static_cast<std::uint64_t>(z & 0x1FFFFF);
+        };
+        auto coord = [&](int i, int axis) { return static_cast<int>(std::floor(a.p(axis, i) / cell)); };
+        std::vector<std::pair<std::uint64_t, int>> cells(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i)
+            cells[static_cast<std::size_t>(i)] = {key(coord(i, 0), coord(i, 1), coord(i, 2)), i};
+        std::sort(cells.begin(), cells.end());
+        for (int i = 0; i < n; ++i) {
+            const int cx = coord(i, 0), cy = coord(i, 1), cz = coord(i, 2);
+            for (int dx = -1; dx <= 1; ++dx)
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dz = -1; dz <= 1; ++dz) {
+                        const std::uint64_t k = key(cx + dx, cy + dy, cz + dz);
+                        auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, 0));
+                        for (; it != cells.end() && it->first == k; ++it)
+                            if (it->second > i)
+                                checkPair(b, a, i, it->second);
+                    }
+        }
+    }
+
+    Health check(const State& b, const State& a)
+    {
+        level = Health::Ok;
+        t = a.t;
+        ++fig.steps;
+        const double e = energy(a);
+        if (!checkFinite(a, e))
+            return level;
+        if (escapedBall.size() != static_cast<std::size_t>(a.size()))
+            escapedBall.assign(static_cast<std::size_t>(a.size()), 0);
+        for (int i = 0; i < a.size(); ++i) {
+            checkPlace(b, a, i);
+            checkStuck(b, a, i);
+        }
+        checkEnergy(a, e);
+        checkPairs(b, a);
+        return level;
+    }
+};
+
+HealthCheck::HealthCheck(const Simulation& sim, const State& start) : impl_(std::make_unique<Impl>(sim, start)) {}
+
+HealthCheck::~HealthCheck() = default;
+
+Health HealthCheck::check(const State& before, const State& after)
+{
+    return impl_->check(before, after);
+}
+
+const HealthFigures& HealthCheck::figures() const
+{
+    return impl_->fig;
+}
+
+const std::vector<HealthStatus>& HealthCheck::issues() const
+{
+    return impl_->issues;
+}
+
+HealthStatus HealthCheck::worst() const
+{
+    if (impl_->fig.nonfinite) // what stopped the run
+        for (const HealthStatus& s : impl_->issues)
+            if (s.what.rfind("the state became non-finite", 0) == 0)
+                return s;
+    for (Health level : {Health::Failed, Health::Warning})
+        for (const HealthStatus& s : impl_->issues)
+            if (s.level == level)
+                return s;
+    return {};
+}
+
+} // namespace ab::diagnostics

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// The health check on hand-worked steps: the report's stage-1 energy gain of g^2 dt^2 / 2
+// per flight step, a late impact against an escape, the stage-3 swap losing 1 - e of the
+// momentum and repeating, balls passing through each other, the spring's compression,
+// and the stage-4 failures of the report's own rules.
+#include "core/diagnostics/health.h"
+#include "support/sim_helpers.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+
+using namespace ab;
+using diagnostics::Health;
+using diagnostics::HealthCheck;
+
+namespace {
+
+// Runs `steps` steps, checking every pair of consecutive final states.
+struct Checked {
+    std::unique_ptr<Simulation> sim;
+    std::unique_ptr<HealthCheck> health;
+};
+
+Checked runChecked(const RunSpec& spec, long long steps)
+{
+    Checked c{makeSimulation(spec), nullptr};
+    State s = c.sim->start();
+    c.health = std::make_unique<HealthCheck>(*c.sim, s);
+    State next, previous;
+    bool first = true;
+    for (long long i = 0; i <= steps; ++i) {
+        if (i < steps)
+            c.sim->step(s, next);
+        if (!first)
+            c.health->check(previous, s);
+        previous = s;
+        first = false;
+        std::swap(s, next);
+    }
+    return c;
+}
+
+bool mentions(const HealthCheck& h, const std::string& text)
+{
+    for (const diagnostics::HealthStatus& s : h.issues())
+        if (s.line().find(text) != std::string::npos)
+            return true;
+    return false;
+}
+
+State oneBall(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double t = 0.0)
+{
+    State s;
+    s.resize(1);
+    s.p.col(0) = p;
+    s.v.col(0) = v;
+    s.t = t;
+    return s;
+}
+
+State balls(const std::vector<Eigen::Vector3d>& p)
+{
+    State s;
+    s.resize(static_cast<int>(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i)
+        s.p.col(static_cast<int>(i)) = p[i];
+    return s;
+}
+
+} // namespace
+
+class HealthChecks : public QObject {
+    Q_OBJECT
+
+private slots:
+    void reportStage1GainsHalfGSquaredDtSquaredPerFlightStep()
+    {
+        // E' - E = (v - g)^2 / 2 - v^2 / 2 + g v = g^2 / 2 when the position moves with the
+        // old velocity (eq 2.16): after 10 steps the gain is 5 g^2 against E0 = g h0.
+        const Checked c = runChecked(testing::spec(SceneId::Bounce1d), 10);
+        const double g = 0.0982;
+        QVERIFY(std::abs(c.health->figures().maxEnergyGain - 5.0 * g / 2000.0) <= 1e-12);
+        QCOMPARE(c.health->worst().level, Health::Warning);
+        QVERIFY(mentions(*c.health, "eq 2.16"));
+    }
+
+    void nonFiniteStateFailsAndStopsTheCount()
+    {
+        auto sim = makeSimulation(testing::spec(SceneId::Box3d));
+        const State start = sim->start();
+        HealthCheck h(*sim, start);
+        State bad = start;
+        bad.p(0, 0) = std::numeric_limits<double>::quiet_NaN();
+        QCOMPARE(h.check(start, bad), Health::Failed);
+        QVERIFY(h.figures().nonfinite);
+        QVERIFY(h.worst().what.find("non-finite") != std::string::npos);
+        // A speed whose energy overflows is as unusable as a NaN.
+        HealthCheck h2(*sim, start);
+        QCOMPARE(h2.check(start, oneBall({2, 20, 2}, {0, -2e154, 0})), Health::Failed);
+        QVERIFY(h2.figures().nonfinite);
+    }
+
+    void lateImpactIsAWarningAndACrossingBeyondOneStepAnEscape()
+    {
+        // box3d, dt 0.01: at 2000 m/s a step travels 20 m (+ g dt^2).
+        auto sim = makeSimulation(testing::spec(SceneId::Box3d));
+        const State before = oneBall({290, 20, 150}, {2000, 0, 0});
+        HealthCheck h(*sim, before);
+        QCOMPARE(h.check(before, oneBall({305, 20, 150}, {2000, 0, 0}, 0.01)), Health::Warning);
+        QCOMPARE(h.figures().maxPenetration, 5.0);
+        QCOMPARE(h.figures().escaped, 0);
+        QCOMPARE(h.check(before, oneBall({330, 20, 150}, {2000, 0, 0}, 0.01)), Health::Failed);
+        QCOMPARE(h.figures().escaped, 1);
+        QVERIFY(h.worst().what.find("x = 300 wall") != std::string::npos);
+    }
+
+    void reportBallOnTheFloorNeverMeetsAWall()
+    {
+        // A ball sliding on the floor takes the floor branch every step (Appendix B checks
+        // the floor first), so it rolls through the wall at x = 300.
+        const Checked c = runChecked(
+            testing::spec(SceneId::Box3d, {"p0=290,0,150", "v0=50,0,0", "k=0.5", "max_bounces=1000000"}), 100);
+        QCOMPARE(c.health->figures().escaped, 1);
+        QCOMPARE(c.health->worst().level, Health::Failed);
+        QVERIFY(mentions(*c.health, "the floor first (Appendix B)"));
+    }
+
+    void reportSwapLosesOneMinusEOfTheMomentumAndRepeats()
+    {
+        // Without gravity: z1 = 100 + 0.3, z2 = 102.01 - 0.1, 1.61 apart: swap to -9.5 and
+        // 28.5 (e = 0.95), so the momentum 20 becomes 19: |dp| / (|v1| + |v2|) = 1 / 40.
+        // Next step they are 1.99 apart, still overlapping: the swap repeats.
+        const Checked c = runChecked(
+            testing::spec(SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,102.01", "v1=0,0,30", "v2=0,0,-10"}),
+            2);
+        const auto& f = c.health->figures();
+        QVERIFY(f.maxMomentumError && std::abs(*f.maxMomentumError - 1.0 / 40.0) <= 1e-12);
+        QVERIFY(f.maxOverlap && std::abs(*f.maxOverlap - 0.39) <= 1e-9);
+        QVERIFY(mentions(*c.health, "swap repeats"));
+        QVERIFY(mentions(*c.health, "scales both swapped velocities by e"));
+    }
+
+    void ballsPassingThroughEachOtherFail()
+    {
+        // 100 m per step each way: the centres swap sides without ever being closer than
+        // 2 r at a step's end.
+        const Checked c = runChecked(testing::spec(SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,200",
+                                                                       "v1=0,0,10000", "v2=0,0,-10000"}),
+                                     1);
+        QCOMPARE(c.health->worst().level, Health::Failed);
+        QVERIFY(mentions(*c.health, "passed through each other"));
+    }
+
+    void springCompressionIsTheClosedForm()
+    {
+        // Undamped (k = 1), no gravity, entering at speed 1: deepest point u / omega0 = 0.1
+        // for k_s = 100; the energy stays that of the start.
+        RunSpec s = testing::spec(SceneId::Bounce1d, {"contact=1", "stiffness=100", "k=1", "g=0", "h0=0.5", "v0=-1"},
+                                  ModelKind::Physical);
+        s.integrator = Integrator::Verlet;
+        s.dt = 1e-4;
+        const Checked c = runChecked(s, 10'000);
+        QVERIFY(std::abs(c.health->figures().maxPenetration - 0.1) <= 1e-6);
+        QCOMPARE(c.health->worst().level, Health::Ok);
+        QVERIFY(c.health->figures().maxEnergyGain <= 1e-9);
+    }
+
+    void explicitEulerOnTheSpringFailsWithAdvice()
+    {
+        RunSpec s = testing::spec(SceneId::Bounce1d, {"contact=1", "h0=10"}, ModelKind::Physical);
+        s.integrator = Integrator::Euler;
+        const Checked c = runChecked(s, 2000);
+        QCOMPARE(c.health->worst().level, Health::Failed);
+        QVERIFY(c.health->worst().advice.find("explicit Euler gains energy") != std::string::npos);
+    }
+
+    void startAtRestIsMeasuredAgainstTheSceneSize()
+    {
+        // No energy at the start: a gain of 1/2 (speed 1) against g x 1 (the scale of a
+        // ball raised by one unit) is 0.5 / 0.0982.
+        auto sim = makeSimulation(testing::spec(SceneId::Bounce1d, {"h0=0"}));
+        const State start = sim->start();
+        HealthCheck h(*sim, start);
+        QCOMPARE(h.check(start, oneBall({0, 0, 0}, {0, 1, 0}, 1.0)), Health::Failed);
+        QVERIFY(std::abs(h.figures().maxEnergyGain - 0.5 / 0.0982) <= 1e-12);
+    }
+
+    void reportStage4BallOnTheFloorIsStuck()
+    {
+        // Appendix D updates only balls above the floor (y > -49): one on it never moves.
+        RunSpec s = testing::spec(SceneId::ManyBalls, {"n=1"});
+        s.init = oneBall({0, -49, 0}, {1, 0, 0});
+        const Checked c = runChecked(s, 3);
+        QCOMPARE(c.health->worst().level, Health::Warning);
+        QVERIFY(mentions(*c.health, "Appendix D updates only balls above the floor"));
+    }
+
+    void reportStage4PushLeavesABallBeyondTheWall()
+    {
+        // Ball 0 at x = 48.9 and ball 1 at 47.5 are within 2.2 r: ball 0 is pushed one
+        // radius along the normal (+x) to 49.9, 0.9 beyond the limit of 49.
+        RunSpec s = testing::spec(SceneId::ManyBalls, {"n=2", "g=0"});
+        State init;
+        init.resize(2);
+        init.p.col(0) = Eigen::Vector3d(48.9, 0, 0);
+        init.p.col(1) = Eigen::Vector3d(47.5, 0, 0);
+        s.init = init;
+        const Checked c = runChecked(s, 1);
+        QVERIFY(std::abs(c.health->figures().maxPenetration - 0.9) <= 1e-12);
+        QCOMPARE(c.health->figures().escaped, 0);
+        QVERIFY(mentions(*c.health, "pushes a colliding ball one radius"));
+    }
+
+    void gridFindsTheOverlapsAllPairsWould()
+    {
+        // 300 balls on a lattice 3 apart (no overlap), then ball 5 moved to 1.3 from ball
+        // 6 across a cell boundary: the deepest overlap is 2 - 1.3 = 0.7.
+        auto sim = makeSimulation(testing::spec(SceneId::ManyBalls, {"n=300"}));
+        std::vector<Eigen::Vector3d> p;
+        for (int i = 0; i < 300; ++i)
+            p.emplace_back(3.0 * (i % 7) - 9.0, 3.0 * ((i / 7) % 7) - 9.0, 3.0 * (i / 49) - 9.0);
+        p[5] = p[6] - Eigen::Vector3d(1.3, 0.0, 0.0);
+        const State s = balls(p);
+        HealthCheck h(*sim, s);
+        h.check(s, s);
+        QVERIFY(h.figures().maxOverlap && std::abs(*h.figures().maxOverlap - 0.7) <= 1e-12);
+        QVERIFY(mentions(h, "balls 5 and 6 overlap"));
+    }
+};
+
+QTEST_GUILESS_MAIN(HealthChecks)
+#include "test_health.moc"

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// The stability suite: every row of every case runs to an honest outcome with finite
+// figures; on the stiff spring each integrator holds below its limit and fails above it
+// when it steps across the contact on its own, and the implicit ones never fail with the
+// contact located.
+#include "core/stability/stability_limit.h"
+#include "core/stability/suite.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <sstream>
+
+using namespace ab;
+using namespace ab::stability;
+
+namespace {
+
+std::vector<RowResult> runCase(const std::string& name, long long maxSteps = 0)
+{
+    std::vector<RowResult> out;
+    for (CaseRow row : findCase(name)->rows()) {
+        if (maxSteps > 0)
+            row.steps = std::min(row.steps, maxSteps);
+        out.push_back(runRow(row));
+    }
+    return out;
+}
+
+bool finiteFigures(const RowResult& r)
+{
+    const auto& f = r.figures;
+    return std::isfinite(f.maxEnergyGain) && std::isfinite(f.maxPenetration) &&
+           (!f.maxMomentumError || std::isfinite(*f.maxMomentumError)) &&
+           (!f.maxOverlap || std::isfinite(*f.maxOverlap)) && (!r.referenceError || std::isfinite(*r.referenceError));
+}
+
+} // namespace
+
+class StabilitySuite : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everyRowEndsWithAnHonestOutcome_data()
+    {
+        QTest::addColumn<QString>("name");
+        for (const StabilityCase& c : stabilityCases())
+            QTest::newRow(c.name.c_str()) << QString::fromStdString(c.name);
+    }
+
+    void everyRowEndsWithAnHonestOutcome()
+    {
+        // Rows shortened to 20000 steps: this checks outcomes, not the long runs' figures.
+        QFETCH(QString, name);
+        const auto rows = runCase(name.toStdString(), 20'000);
+        QVERIFY(!rows.empty());
+        for (const RowResult& r : rows) {
+            const QString where =
+                QString::fromStdString(r.caseName + " " + r.model + " " + r.integrator + " " + r.setting);
+            switch (r.outcome) {
+            case RowOutcome::Ran:
+                QVERIFY2(r.verdict == "ok" || r.verdict == "degraded" || r.verdict == "failed", qPrintable(where));
+                QVERIFY2(finiteFigures(r), qPrintable(where));
+                QVERIFY2(r.figures.steps > 0, qPrintable(where));
+                // A failure always says what happened.
+                QVERIFY2(r.verdict == "ok" || !r.note.empty(), qPrintable(where));
+                break;
+            case RowOutcome::Refused:
+                QVERIFY2(r.verdict == "ok", qPrintable(where + " " + QString::fromStdString(r.note)));
+                break;
+            case RowOutcome::NotAvailable:
+                QCOMPARE(r.note, std::string("not available in this build"));
+                QCOMPARE(r.model, std::string("physical"));
+                break;
+            case RowOutcome::Skipped:
+                QVERIFY(r.note.find("not run: ") == 0);
+                break;
+            }
+        }
+    }
+
+    void valuesOutsideTheTableAreRefused()
+    {
+        bool sawRefusal = false;
+        for (const RowResult& r : runCase("extreme-constants", 2000))
+            if (r.outcome == RowOutcome::Refused) {
+                sawRefusal = true;
+                QVERIFY(r.note.find("k: 1.5 is outside the allowed range [0, 1]") != std::string::npos);
+            }
+        QVERIFY(sawRefusal);
+    }
+
+    void stiffSpringHoldsBelowEachLimitAndFailsAboveIt()
+    {
+        // Stepping across the contact on its own (step-end), each explicit integrator on
+        // the linear spring of stiffness 1e1 and 1e3 fails at 1.25 times its limit on the
+        // spring's damped oscillator and does not fail at 0.8 times it.
+        int checked = 0;
+        for (const RowResult& r : runCase("stiff-spring")) {
+            const bool stepEnd = r.setting.rfind("step-end, linear stiffness 1e1,", 0) == 0 ||
+                                 r.setting.rfind("step-end, linear stiffness 1e3,", 0) == 0;
+            const QString where = QString::fromStdString(r.integrator + " " + r.setting + ": " + r.note);
+            if (r.integrator == "implicit-euler" ||
+                (r.integrator == "implicit-midpoint" && r.setting.rfind("located", 0) == 0)) {
+                // Bounded at every stiffness and step tried.
+                QVERIFY2(r.verdict != "failed" && !r.figures.nonfinite && r.figures.escaped == 0, qPrintable(where));
+                continue;
+            }
+            if (!stepEnd || r.integrator == "implicit-midpoint")
+                continue;
+            const bool above = r.setting.find("= 1.25 x") != std::string::npos;
+            QVERIFY2(above ? r.verdict == "failed" : r.verdict != "failed", qPrintable(where));
+            ++checked;
+        }
+        QCOMPARE(checked, 16); // 4 explicit integrators x 2 steps x 2 stiffnesses
+    }
+
+    void theReportsCoarseStepFailsWhereItsEulerGainsAQuarter()
+    {
+        // Stage 1 at dt = 100: three steps of fall already add 3 g^2 dt^2 / 2 = 145 to
+        // E0 = g h0 = 196 (74%): failed; at the report's own dt = 1, degraded.
+        const auto rows = runCase("coarse-step");
+        for (const RowResult& r : rows) {
+            if (r.model != "report")
+                continue;
+            if (r.dt == 100.0) {
+                QCOMPARE(r.verdict, std::string("failed"));
+                QVERIFY(r.figures.maxEnergyGain >= 1.5 * 0.0982 * 0.0982 * 1e4 / (0.0982 * 2000.0));
+            }
+            if (r.dt == 1.0)
+                QCOMPARE(r.verdict, std::string("degraded"));
+        }
+    }
+
+    void csvHasTheContractColumnsAndNoNaN()
+    {
+        std::ostringstream csv;
+        writeCsv(csv, runCase("degenerate"));
+        const std::string text = csv.str();
+        QVERIFY(text.rfind("case,model,integrator,max_energy_gain,max_penetration,escaped,nonfinite,verdict,", 0) == 0);
+        QVERIFY(text.find("nan") == std::string::npos);
+        QVERIFY(text.find("inf") == std::string::npos);
+        QVERIFY(text.find("not available") == std::string::npos); // only runs are CSV rows
+    }
+
+    void markdownListsTheLimitsAndEveryRow()
+    {
+        std::ostringstream md;
+        const auto rows = runCase("plastic");
+        writeMarkdown(md, rows);
+        const std::string text = md.str();
+        QCOMPARE(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')), rows.size() + 2);
+        std::ostringstream limits;
+        writeLimits(limits);
+        QVERIFY(limits.str().find("| rk4 | 2.829") != std::string::npos);
+    }
+};
+
+QTEST_GUILESS_MAIN(StabilitySuite)
+#include "test_stability_suite.moc"
