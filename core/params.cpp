@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "params.h"
 
+#include "io/json.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -19,7 +21,7 @@ std::string_view trim(std::string_view s)
 
 std::string quoted(std::string_view s)
 {
-    return "'" + std::string(s) + "'";
+    return "'" + printableInput(s) + "'";
 }
 
 } // namespace
@@ -163,11 +165,16 @@ std::optional<std::size_t> ParamValues::indexOf(std::string_view key) const
     return std::nullopt;
 }
 
+std::string printableInput(std::string_view text)
+{
+    return json::printable(text);
+}
+
 const ParamSpec& ParamValues::spec(std::string_view key) const
 {
     const auto i = indexOf(key);
     if (!i)
-        throw InputError("unknown parameter '" + std::string(key) + "'");
+        throw InputError("unknown parameter '" + printableInput(key) + "'");
     return (*table_)[*i];
 }
 
@@ -219,7 +226,7 @@ void ParamValues::parseAssignment(std::string_view assignment)
 {
     const auto eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0)
-        throw InputError("--set: '" + std::string(assignment) + "' is not NAME=VALUE");
+        throw InputError("--set: '" + printableInput(assignment) + "' is not NAME=VALUE");
     parse(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
 }
 

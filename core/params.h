@@ -81,6 +81,10 @@ double parseReal(std::string_view text, std::string_view what);
 long long parseInteger(std::string_view text, std::string_view what);
 Eigen::Vector3d parseVector(std::string_view text, std::string_view what);
 
+// User text made safe to quote in a one-line message: control characters escaped, long
+// text cut (see json::printable).
+std::string printableInput(std::string_view text);
+
 // Checks one value against its spec without storing it; returns the error text or nothing.
 std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value);
 

@@ -83,8 +83,8 @@ void Args::finish() const
         return;
     const std::string& a = args_.front();
     if (a.rfind("--", 0) == 0)
-        throw InputError(command_ + ": unknown option '" + a + "'");
-    throw InputError(command_ + ": unexpected argument '" + a + "'");
+        throw InputError(command_ + ": unknown option '" + printableInput(a) + "'");
+    throw InputError(command_ + ": unexpected argument '" + printableInput(a) + "'");
 }
 
 } // namespace ab::cli

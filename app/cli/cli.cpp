@@ -74,7 +74,7 @@ int run(const std::vector<std::string>& argv, std::ostream& out, std::ostream& e
             return 1;
         }
     }
-    err << "amazeballs-cli: unknown command '" << name << "' (try: amazeballs-cli help)\n";
+    err << "amazeballs-cli: unknown command '" << printableInput(name) << "' (try: amazeballs-cli help)\n";
     return 2;
 }
 

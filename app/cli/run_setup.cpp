@@ -27,7 +27,7 @@ E readEnum(Args& args, const std::string& name, std::optional<E> (*parse)(std::s
         return fallback;
     const auto value = parse(*text);
     if (!value)
-        throw InputError("--" + name + ": unknown value '" + *text + "' (choose " + choices + ")");
+        throw InputError("--" + name + ": unknown value '" + printableInput(*text) + "' (choose " + choices + ")");
     return *value;
 }
 
@@ -38,7 +38,7 @@ RunSetup readRunSetup(Args& args)
     const std::string sceneKey = args.positional("SCENE (one of " + sceneKeys() + ")");
     const SceneInfo* info = findScene(sceneKey);
     if (!info)
-        throw InputError("unknown scene '" + sceneKey + "' (choose " + sceneKeys() + ")");
+        throw InputError("unknown scene '" + printableInput(sceneKey) + "' (choose " + sceneKeys() + ")");
     RunSetup setup{RunSpec(info->id), 0, std::nullopt};
     RunSpec& spec = setup.spec;
 

@@ -85,6 +85,7 @@ private slots:
         QTest::newRow("empty value") << "bounce1d:k=" << "is not a number";
         QTest::newRow("two signs") << "bounce1d:v0=+-5" << "is not a number";
         QTest::newRow("hex") << "bounce1d:h0=0x10" << "is not a number";
+        QTest::newRow("newline in the name") << "bounce1d:k\n=1" << "unknown parameter 'k\\n'";
         QTest::newRow("negative component") << "box3d:p0=-1,2,3" << "(x component) is outside";
         QTest::newRow("too many balls") << "many-balls:n=100000000" << "n: 100000000 is outside";
     }
@@ -102,6 +103,7 @@ private slots:
             QFAIL("accepted");
         } catch (const ab::InputError& e) {
             QVERIFY2(QString(e.what()).contains(mentions), e.what());
+            QVERIFY(!QString(e.what()).contains('\n')); // one line, whatever was typed
         }
         QVERIFY(values == before); // nothing half-applied
     }
