@@ -30,6 +30,14 @@ SceneInfo makeBounce1d()
         integer("max_bounces", "count_max", 10, 0, 1e9, "2.2.1",
                 "the report zeroes the ball once more than this many bounces have happened (against Zeno)",
                 ReportModel),
+        positive(real("m", "m", "kg", 1.0, 0.0, 1e9, "2.1.2, 3.1",
+                      "mass of the ball; with drag it sets the terminal speed sqrt(m g / c)", PhysicalModel)),
+        real("b", "b", "kg/step", 0.0, 0.0, 1e9, "3.1 (air resistance)", "linear air drag, force -b v (0: none)",
+             PhysicalModel),
+        real("c", "c", "kg/unit", 0.0, 0.0, 1e9, "3.1 (air resistance)", "quadratic air drag, force -c |v| v (0: none)",
+             PhysicalModel),
+        real("rest_speed", "v_rest", "unit/step", 0.0, 0.0, 1e6, "2.2.1 (Zeno)",
+             "an impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)", PhysicalModel),
     };
     s.equations = {
         {"2.1", "-g = dv/dt", "free flight: gravity is the only force"},
