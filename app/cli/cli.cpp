@@ -22,6 +22,8 @@ const std::array commands{
     Command{"list", "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
     Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
+    Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
+            studyCommand},
 };
 
 void usage(std::ostream& out)
@@ -32,6 +34,9 @@ void usage(std::ostream& out)
     out << "\nrun options: [--model report|physical] [--integrator NAME] [--impacts located|step-end]\n"
            "  [--broadphase grid|all-pairs] [--threads T] [--dt S] [--steps N | --t-end S]\n"
            "  [--set NAME=VALUE]... [--preset NAME|FILE] [--init FILE] [--every K] [--out FILE] [--summary]\n"
+           "\nstudy options: [--set NAME=VALUE]... [--preset NAME|FILE] [--t-end S] [--dt-max S] [--dt-min S]\n"
+           "  [--per-decade N] [--repeats N] [--impact K] [--out FILE.csv] [--chart FILE.png|FILE.svg]\n"
+           "  [--markdown FILE.md] [--quiet]\n"
            "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error.\n";
 }
 

@@ -126,7 +126,16 @@ double firstInwardCrossing(Poly c, double hMax)
     const int degree = degreeOf(c);
     if (degree == 0)
         return never;
-    if (!std::isfinite(hMax)) {
+    if (std::isfinite(hMax)) {
+        // Most contacts are far away: f cannot fall by more than sum |c_i| hMax^i.
+        double fall = 0.0, power = 1.0;
+        for (int i = 1; i <= degree; ++i) {
+            power *= hMax;
+            fall += std::abs(c[static_cast<std::size_t>(i)]) * power;
+        }
+        if (fall < c[0])
+            return never;
+    } else {
         // Cauchy's bound: every real root satisfies |h| <= 1 + max |c_i / c_n|.
         double bound = 0.0;
         for (int i = 0; i < degree; ++i)

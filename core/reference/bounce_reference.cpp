@@ -68,6 +68,11 @@ long long BounceReference::tailBounce(double t) const
 {
     if (k_ == 1.0)
         return static_cast<long long>(std::floor((t - tTail_) * g_ / (2.0 * uTail_)));
+    const long long h = hint_;
+    if (tailLaunch(static_cast<double>(h)) <= t && t < tailLaunch(static_cast<double>(h + 1)))
+        return h;
+    if (tailLaunch(static_cast<double>(h + 1)) <= t && t < tailLaunch(static_cast<double>(h + 2)))
+        return hint_ = h + 1;
     long long lo = 0, hi = 1;
     while (tailLaunch(static_cast<double>(hi)) <= t) {
         lo = hi;
@@ -77,7 +82,7 @@ long long BounceReference::tailBounce(double t) const
         const long long mid = lo + (hi - lo) / 2;
         (tailLaunch(static_cast<double>(mid)) <= t ? lo : hi) = mid;
     }
-    return lo;
+    return hint_ = lo;
 }
 
 double BounceReference::height(double t) const

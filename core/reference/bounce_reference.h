@@ -44,6 +44,10 @@ private:
     double uTail_ = 0.0;
     double tRest_ = std::numeric_limits<double>::infinity();
 
+    // Where the last search of the tail ended: samples come in time order, so the next
+    // search starts there (a cache only; results do not depend on it; not thread-safe).
+    mutable long long hint_ = 0;
+
     double tailLaunch(double n) const;
     long long tailBounce(double t) const;
 };
