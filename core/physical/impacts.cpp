@@ -30,7 +30,7 @@ double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, d
 }
 
 double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi, const Eigen::Vector3d& pj,
-                         Eigen::Vector3d& vi, Eigen::Vector3d& vj)
+                         Eigen::Vector3d& vi, Eigen::Vector3d& vj, std::optional<double> e)
 {
     const Eigen::Vector3d n = (pi - pj).normalized();
     const double closing = (vi - vj).dot(n);
@@ -40,13 +40,26 @@ double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi
     const double mj = w.mass[static_cast<std::size_t>(j)];
     // One impulse J n, added to one ball and taken from the other: momentum is conserved
     // by construction, and the relative normal velocity becomes -e times what it was.
-    const Eigen::Vector3d impulse = (-(1.0 + w.e) * closing / (1.0 / mi + 1.0 / mj)) * n;
+    const Eigen::Vector3d impulse = (-(1.0 + e.value_or(w.e)) * closing / (1.0 / mi + 1.0 / mj)) * n;
     vi += impulse / mi;
     vj -= impulse / mj;
     return -closing;
 }
 
-void separatePair(const World& w, int i, int j, Eigen::Vector3d& pi, Eigen::Vector3d& pj)
+namespace {
+
+// Touching a wall that a push along `dir` would drive the centre into.
+bool pinned(const World& w, const Eigen::Vector3d& p, const Eigen::Vector3d& dir)
+{
+    for (const Wall& wall : w.walls)
+        if (wall.gap(p) <= 0.0 && wall.side * dir[wall.axis] < 0.0)
+            return true;
+    return false;
+}
+
+} // namespace
+
+void separatePair(const World& w, int i, int j, Eigen::Vector3d& pi, Eigen::Vector3d& pj, bool walls)
 {
     const Eigen::Vector3d d = pi - pj;
     const double dist = d.norm();
@@ -55,8 +68,14 @@ void separatePair(const World& w, int i, int j, Eigen::Vector3d& pi, Eigen::Vect
     const double mi = w.mass[static_cast<std::size_t>(i)];
     const double mj = w.mass[static_cast<std::size_t>(j)];
     const Eigen::Vector3d push = (2.0 * w.radius - dist) / dist * d;
-    pi += mj / (mi + mj) * push;
-    pj -= mi / (mi + mj) * push;
+    double shareI = mj / (mi + mj);
+    if (walls) {
+        const bool pinI = pinned(w, pi, push), pinJ = pinned(w, pj, -push);
+        if (pinI != pinJ)
+            shareI = pinI ? 0.0 : 1.0;
+    }
+    pi += shareI * push;
+    pj -= (1.0 - shareI) * push;
 }
 
 } // namespace ab::physical
