@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <iomanip>
 #include <limits>
@@ -43,8 +45,12 @@ std::vector<double> logSweep(double dtMax, double dtMin, int perDecade)
 {
     const int n = static_cast<int>(std::lround(std::log10(dtMax / dtMin) * perDecade));
     std::vector<double> dts;
-    for (int i = 0; i <= n; ++i)
-        dts.push_back(dtMax * std::pow(10.0, -static_cast<double>(i) / perDecade));
+    for (int i = 0; i <= n; ++i) {
+        // Twelve significant digits, so a whole decade reads 0.01, not 0.010000000000000002.
+        char text[32];
+        std::snprintf(text, sizeof text, "%.12g", dtMax * std::pow(10.0, -static_cast<double>(i) / perDecade));
+        dts.push_back(std::strtod(text, nullptr));
+    }
     return dts;
 }
 
