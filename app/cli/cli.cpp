@@ -25,6 +25,8 @@ const std::array commands{
     Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
                          "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},
+    Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
+            studyCommand},
 };
 
 void usage(std::ostream& out)
@@ -35,6 +37,9 @@ void usage(std::ostream& out)
     out << "\nrun options: [--model report|physical] [--integrator NAME] [--impacts located|step-end]\n"
            "  [--broadphase grid|all-pairs] [--threads T] [--dt S] [--steps N | --t-end S]\n"
            "  [--set NAME=VALUE]... [--preset NAME|FILE] [--init FILE] [--every K] [--out FILE] [--summary]\n"
+           "\nstudy options: [--set NAME=VALUE]... [--preset NAME|FILE] [--t-end S] [--dt-max S] [--dt-min S]\n"
+           "  [--per-decade N] [--repeats N] [--impact K] [--out FILE.csv] [--chart FILE.png|FILE.svg]\n"
+           "  [--markdown FILE.md] [--quiet]\n"
            "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
            "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
            "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"

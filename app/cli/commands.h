@@ -11,5 +11,6 @@ namespace ab::cli {
 int listCommand(Args& args, std::ostream& out, std::ostream& err);
 int runCommand(Args& args, std::ostream& out, std::ostream& err);
 int stabilityCommand(Args& args, std::ostream& out, std::ostream& err);
+int studyCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

@@ -1,11 +1,26 @@
 // SPDX-License-Identifier: MIT
+// Stage 2 in the physical model: a point ball in the open-top box [0, box]^3 (its centre
+// meets the floor and the walls), restitution k and friction mu at every face.
 #include "physical_models.h"
+#include "physical_simulation.h"
 
 namespace ab::physical {
 
-std::unique_ptr<Simulation> makeBox3d(const RunSpec& spec, double)
+std::unique_ptr<Simulation> makeBox3d(const RunSpec& spec, double dt)
 {
-    throw InputError("--model physical: not available for " + sceneInfo(spec.scene).key + " in this build");
+    const ParamValues& v = spec.params;
+    World w;
+    w.g = v.real("g");
+    w.dragLinear = v.real("b");
+    w.dragQuadratic = v.real("c");
+    w.mass = {v.real("m")};
+    w.restSpeed = v.real("rest_speed");
+    w.walls = boxWalls(0.0, v.real("box"), v.real("k"), v.real("mu"));
+    State s;
+    s.resize(1);
+    s.p.col(0) = v.vector("p0");
+    s.v.col(0) = v.vector("v0");
+    return makePhysicalSimulation(spec, dt, std::move(w), std::move(s), {"p0"});
 }
 
 } // namespace ab::physical

@@ -30,6 +30,19 @@ SceneInfo makeBox3d()
         integer("max_bounces", "count_max", 50, 0, 1e9, "2.2.2",
                 "the report zeroes the ball once more than this many floor and wall contacts have happened",
                 ReportModel),
+        positive(real("m", "m", "kg", 1.0, 0.0, 1e9, "2.1.2, 3.1",
+                      "mass of the ball; with drag it sets the terminal speed sqrt(m g / c)", PhysicalModel)),
+        real("b", "b", "kg/s", 0.0, 0.0, 1e9, "3.1 (air resistance)", "linear air drag, force -b v (0: none)",
+             PhysicalModel),
+        real("c", "c", "kg/m", 0.0, 0.0, 1e9, "3.1 (air resistance)", "quadratic air drag, force -c |v| v (0: none)",
+             PhysicalModel),
+        real("mu", "mu", "1", 0.0, 0.0, 10.0, "Coulomb friction",
+             "friction at floor and walls: an impact changes the velocity along the wall by at most mu times the "
+             "change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)",
+             PhysicalModel),
+        real("rest_speed", "v_rest", "m/s", 0.0, 0.0, 1e6, "2.2.2 (Zeno)",
+             "a floor impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)",
+             PhysicalModel),
     };
     s.crossCheck = [](const ParamValues& v) {
         const double box = v.real("box");

@@ -36,6 +36,20 @@ SceneInfo makeTwoBalls()
         integer("max_events", "count_max", 100, 0, 1e9, "Appendix C",
                 "the report zeroes both velocities once more than this many contacts and swaps have happened",
                 ReportModel),
+        positive(real("m1", "m1", "kg", 1.0, 0.0, 1e9, "eq 2.4 (any masses)",
+                      "mass of ball 1; momentum m1 v1 + m2 v2 is conserved in every collision", PhysicalModel)),
+        positive(real("m2", "m2", "kg", 1.0, 0.0, 1e9, "eq 2.4 (any masses)", "mass of ball 2", PhysicalModel)),
+        real("b", "b", "kg/s", 0.0, 0.0, 1e9, "3.1 (air resistance)",
+             "linear air drag on each ball, force -b v (0: none)", PhysicalModel),
+        real("c", "c", "kg/m", 0.0, 0.0, 1e9, "3.1 (air resistance)",
+             "quadratic air drag on each ball, force -c |v| v (0: none)", PhysicalModel),
+        real("mu", "mu", "1", 0.0, 0.0, 10.0, "Coulomb friction",
+             "friction at floor and walls: an impact changes the velocity along the wall by at most mu times the "
+             "change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)",
+             PhysicalModel),
+        real("rest_speed", "v_rest", "m/s", 0.0, 0.0, 1e6, "Zeno",
+             "a floor impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)",
+             PhysicalModel),
     };
     s.crossCheck = [](const ParamValues& v) {
         const double box = v.real("box");

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "world.h"
+
+#include "../params.h"
+
+namespace ab::physical {
+
+Wall floorWall(double y, double k, double mu)
+{
+    return Wall{1, y, 1.0, k, mu, "floor"};
+}
+
+std::vector<Wall> boxWalls(double lo, double hi, double k, double mu)
+{
+    return {floorWall(lo, k, mu), Wall{0, lo, 1.0, k, mu, "wall x = 0"}, Wall{0, hi, -1.0, k, mu, "wall x = box"},
+            Wall{2, lo, 1.0, k, mu, "wall z = 0"}, Wall{2, hi, -1.0, k, mu, "wall z = box"}};
+}
+
+const Wall* restingOn(const World& w, const Eigen::Vector3d& p, const Eigen::Vector3d& v)
+{
+    for (const Wall& wall : w.walls)
+        if (w.supports(wall) && wall.gap(p) == 0.0 && wall.normalSpeed(v) == 0.0)
+            return &wall;
+    return nullptr;
+}
+
+Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, const Wall* support)
+{
+    Eigen::Vector3d a = w.gravity();
+    if (w.hasDrag()) // F = -b v - c |v| v, divided by the mass
+        a -= (w.dragLinear + w.dragQuadratic * v.norm()) / w.mass[static_cast<std::size_t>(i)] * v;
+    if (!support)
+        return a;
+    // Resting contact: the normal force N/m equals the acceleration pressing into the wall
+    // and cancels it; friction mu N/m acts against the sliding velocity (the velocity's
+    // own direction along the wall, not a fixed axis).
+    const double pressing = -support->side * a[support->axis];
+    if (pressing <= 0.0)
+        return a;
+    a[support->axis] = 0.0;
+    if (support->mu > 0.0) {
+        Eigen::Vector3d slide = v;
+        slide[support->axis] = 0.0;
+        const double speed = slide.norm();
+        if (speed > 0.0)
+            a -= support->mu * pressing / speed * slide;
+    }
+    return a;
+}
+
+double energy(const World& w, const Vec3Array& p, const Vec3Array& v)
+{
+    double e = 0.0;
+    for (int i = 0; i < w.balls(); ++i) {
+        const double m = w.mass[static_cast<std::size_t>(i)];
+        e += 0.5 * m * v.col(i).squaredNorm() + m * w.g * p(1, i);
+    }
+    return e;
+}
+
+} // namespace ab::physical

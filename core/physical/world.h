@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// The fixed description of a physical-model scene: gravity, air drag, the balls' masses
+// and contact radius, the walls and the restitution and friction at each contact. A
+// world holds any number of balls; the time stepping (stepped_simulation.cpp) and the
+// event-driven motion (event_simulation.cpp) both read it, and so do the impact rules
+// (impacts.h), so every scene shares one set of physics.
+#pragma once
+
+#include "../state.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace ab::physical {
+
+// A plane that keeps ball centres on one side: p[axis] >= position (side +1, the floor
+// and the walls at 0) or p[axis] <= position (side -1, the walls at `box`). `position`
+// is where a centre touches it, so a ball of radius r meets the floor y = 0 at y = r.
+struct Wall {
+    int axis = 1;
+    double position = 0.0;
+    double side = 1.0;
+    double k = 1.0;  // restitution of the normal velocity (eq 2.3), 0..1
+    double mu = 0.0; // Coulomb friction coefficient along the wall
+    std::string name;
+
+    // Signed distance of a centre from the wall: > 0 free, 0 touching, < 0 inside.
+    double gap(const Eigen::Vector3d& p) const { return side * (p[axis] - position); }
+    // Velocity along the inward normal: > 0 moving away, < 0 approaching.
+    double normalSpeed(const Eigen::Vector3d& v) const { return side * v[axis]; }
+};
+
+struct World {
+    double g = 0.0;             // magnitude of gravity, down is -y
+    double dragLinear = 0.0;    // b in F = -b v
+    double dragQuadratic = 0.0; // c in F = -c |v| v
+    std::vector<double> mass;   // one per ball
+    double radius = 0.0;        // two centres touch at 2 radius (scenes with 2+ balls)
+    double e = 1.0;             // ball-ball restitution (eq 2.5)
+    double restSpeed = 0.0;     // impacts on a floor slower than this do not rebound
+    std::vector<Wall> walls;
+
+    int balls() const { return static_cast<int>(mass.size()); }
+    bool hasDrag() const { return dragLinear > 0.0 || dragQuadratic > 0.0; }
+    Eigen::Vector3d gravity() const { return {0.0, -g, 0.0}; }
+    // Gravity presses a ball against this wall (the floor): the wall can hold it at rest.
+    bool supports(const Wall& w) const { return g > 0.0 && w.axis == 1 && w.side > 0.0; }
+};
+
+// The floor at height `y` and, unless `floorOnly`, the four side walls at `lo` and `hi`
+// on x and z (no ceiling: the box is open at the top), all with restitution k and
+// friction mu. `lo`/`hi` are where a centre touches (r and box - r for balls of radius r).
+std::vector<Wall> boxWalls(double lo, double hi, double k, double mu);
+Wall floorWall(double y, double k, double mu);
+
+// The wall ball `p`, `v` rests on: touching a supporting wall exactly with no normal
+// velocity (the impact rules put a resting ball there). Null when it is not resting.
+const Wall* restingOn(const World& w, const Eigen::Vector3d& p, const Eigen::Vector3d& v);
+
+// Acceleration of ball i at velocity v (Newton's second law with gravity and drag,
+// a = g - (b + c |v|) v / m). On a supporting wall the contact force cancels the part
+// that presses into it, and Coulomb friction mu N opposes the sliding velocity.
+Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, const Wall* support);
+
+// Kinetic plus potential energy (zero at y = 0) of every ball.
+double energy(const World& w, const Vec3Array& p, const Vec3Array& v);
+
+} // namespace ab::physical
