@@ -130,10 +130,14 @@ QWidget* MainWindow::buildLeftPanel()
 QWidget* MainWindow::buildViewArea()
 {
     if (BallView::available()) {
-        view_ = new BallView;
+        view_ = new BallView; // owned by its container
         connect(view_, &BallView::ballPicked, &controller_, &RunController::selectBall);
+        connect(view_, &BallView::keysReleased, this, [this] {
+            activateWindow();
+            transport_->setFocus();
+        });
         connect(view_, &BallView::framePainted, this, [this](double, double) { ++framesSinceFps_; });
-        return view_;
+        return view_->container();
     }
     // No OpenGL windows on this platform (offscreen, minimal): say so where the view would be.
     placeholder_ = new QLabel(tr("The 3D view needs OpenGL, which the '%1' platform does not offer.\n"

@@ -200,7 +200,9 @@ void MotionChart::updateValueRange(double lo, double hi)
     hi_ = haveRange_ ? std::max(hi_, hi) : hi;
     haveRange_ = true;
     const double pad = hi_ > lo_ ? 0.05 * (hi_ - lo_) : std::max(1.0, std::abs(hi_) * 0.1);
-    setNiceRange(valueAxis_, lo_ - pad, hi_ + pad, 6);
+    // About one labelled tick per 45 pixels of plot height, so short charts stay legible.
+    const int ticks = std::clamp(int(plotArea().height() / 45.0), 3, 6);
+    setNiceRange(valueAxis_, lo_ - pad, hi_ + pad, ticks);
 }
 
 void MotionChart::setCursorTime(std::optional<double> t)

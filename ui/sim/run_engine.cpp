@@ -5,6 +5,11 @@
 
 #include <cmath>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
 namespace ab::ui {
 
 namespace {
@@ -12,6 +17,16 @@ namespace {
 bool finiteState(const State& s)
 {
     return std::isfinite(s.t) && s.p.allFinite() && s.v.allFinite();
+}
+
+// The window's drawing comes first: on a busy machine a long step (10,000 balls) must
+// not take the core the window and software OpenGL need. Linux threads have their own
+// nice value; elsewhere the thread keeps the default priority.
+void lowerThisThreadsPriority()
+{
+#ifdef __linux__
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
+#endif
 }
 
 } // namespace
@@ -104,6 +119,7 @@ bool RunEngine::mayStep() const
 
 void RunEngine::loop()
 {
+    lowerThisThreadsPriority();
     std::unique_lock lock(mutex_);
     while (!quit_) {
         if (!mayStep()) {

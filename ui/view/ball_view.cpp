@@ -68,12 +68,14 @@ std::vector<unsigned> ballColours(const RunSpec& spec, int balls)
     return colours;
 }
 
-BallView::BallView(QWidget* parent) : QOpenGLWidget(parent)
+BallView::BallView()
 {
     setFormat(viewFormat());
-    setFocusPolicy(Qt::ClickFocus);
-    setMinimumSize(320, 240);
-    setAccessibleName(tr("3D view"));
+    container_ = QWidget::createWindowContainer(this);
+    container_->setObjectName("ballView");
+    container_->setFocusPolicy(Qt::ClickFocus);
+    container_->setMinimumSize(320, 240);
+    container_->setAccessibleName(tr("3D view"));
     sincePaint_.start();
 }
 
@@ -105,7 +107,11 @@ void BallView::releaseGl()
     doneCurrent();
 }
 
-void BallView::resizeGL(int, int) {}
+void BallView::resizeGL(int, int)
+{
+    if (!cameraMoved_)
+        framePending_ = true; // keep the whole scene in view until the user moves the camera
+}
 
 void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours,
                         bool reframe)
@@ -125,6 +131,14 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
 
 void BallView::resetView()
 {
+    // Framed at the next paint, when the window's size (the aspect) is known.
+    framePending_ = true;
+    cameraMoved_ = false;
+    update();
+}
+
+void BallView::frameScene()
+{
     const float aspect = float(width()) / float(std::max(height(), 1));
     // The report's WebGL camera stands at (100, 50, 50) from the centre: yaw about 63
     // degrees, pitch about 24. The vertical scene is seen from the side.
@@ -132,12 +146,13 @@ void BallView::resetView()
         camera_.frame(geometry_.lo, geometry_.hi, 63.0f, 24.0f, aspect);
     else
         camera_.frame(geometry_.lo, geometry_.hi, 0.0f, 8.0f, aspect);
-    update();
+    framePending_ = false;
 }
 
 void BallView::turn(float yawDegrees)
 {
     camera_.turn(yawDegrees);
+    cameraMoved_ = true;
     update();
 }
 
@@ -209,6 +224,8 @@ void BallView::paintGL()
     QElapsedTimer timer;
     timer.start();
     uploadPending();
+    if (framePending_ && width() > 0 && height() > 0)
+        frameScene();
     QPainter painter(this);
     painter.beginNativePainting();
     RenderInputs in = renderInputs();
@@ -236,7 +253,7 @@ void BallView::paintOverlay(QPainter& p)
                      QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
     if (!glError_.isEmpty())
         drawHaloText(p, QPointF(12, 20), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
-    if (hasFocus())
+    if (keyFocus_)
         drawHaloText(p, QPointF(12, height() - 14),
                      tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
                      QColor(0x30, 0x30, 0x30), Qt::AlignLeft);
@@ -300,7 +317,7 @@ bool BallView::event(QEvent* e)
             return true;
         }
     }
-    return QOpenGLWidget::event(e);
+    return QOpenGLWindow::event(e);
 }
 
 void BallView::keyPressEvent(QKeyEvent* e)
@@ -328,24 +345,33 @@ void BallView::keyPressEvent(QKeyEvent* e)
         camera_.zoom(-1.0f);
         break;
     case Qt::Key_Escape:
-        clearFocus();
+        emit keysReleased();
         break;
     default:
-        QOpenGLWidget::keyPressEvent(e);
+        QOpenGLWindow::keyPressEvent(e);
         return;
     }
+    cameraMoved_ = true;
     update();
 }
 
 void BallView::focusInEvent(QFocusEvent* e)
 {
-    QOpenGLWidget::focusInEvent(e);
+    QOpenGLWindow::focusInEvent(e);
+    keyFocus_ = true;
     update();
 }
 
 void BallView::focusOutEvent(QFocusEvent* e)
 {
-    QOpenGLWidget::focusOutEvent(e);
+    QOpenGLWindow::focusOutEvent(e);
+    keyFocus_ = false;
+    update();
+}
+
+void BallView::exposeEvent(QExposeEvent* e)
+{
+    QOpenGLWindow::exposeEvent(e);
     update();
 }
 
@@ -368,6 +394,7 @@ void BallView::mouseMoveEvent(QMouseEvent* e)
         camera_.pan(float(d.x()), float(d.y()), size());
     else
         return;
+    cameraMoved_ = true;
     update();
 }
 
@@ -391,6 +418,7 @@ void BallView::mouseDoubleClickEvent(QMouseEvent* e)
 void BallView::wheelEvent(QWheelEvent* e)
 {
     camera_.zoom(float(e->angleDelta().y()) / 120.0f);
+    cameraMoved_ = true;
     update();
 }
 
