@@ -45,7 +45,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&controller_, &RunController::advanced, this, &MainWindow::refresh);
     connect(&controller_, &RunController::playingChanged, transport_, &TransportBar::setPlaying);
     connect(&controller_, &RunController::speedChanged, transport_, &TransportBar::setSpeed);
-    connect(&controller_, &RunController::selectionChanged, this, [this](int) { runReplaced(); });
+    connect(&controller_, &RunController::selectionChanged, this, &MainWindow::ballSelected);
     fpsClock_.start();
     turntable_.setInterval(16);
     connect(&turntable_, &QTimer::timeout, this, [this] {
@@ -290,6 +290,16 @@ void MainWindow::runReplaced()
         view_->setSelected(ball);
     }
     transport_->goLive();
+    panelClock_.invalidate();
+    refresh();
+}
+
+void MainWindow::ballSelected(int ball)
+{
+    const SceneLayout& layout = controller_.layout();
+    charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd());
+    if (view_)
+        view_->setSelected(ball);
     panelClock_.invalidate();
     refresh();
 }

@@ -71,6 +71,7 @@ private:
     std::optional<QString> startRun(const Setup& setup);
     Setup& setupFor(SceneId scene);
     void runReplaced();
+    void ballSelected(int ball);
     void refresh();
     void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
     void exportInteractively(ChartKind kind, ExportFormat format);
