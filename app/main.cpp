@@ -5,14 +5,38 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDir>
+#include <QFile>
 #include <QSurfaceFormat>
 #include <QTimer>
 
 #include <algorithm>
 #include <cstdio>
+#include <unistd.h>
 #include <vector>
 
 namespace {
+
+// CPU seconds used so far by this process's threads other than the stepping thread
+// ("ab-stepper"): the window's own thread and the software renderer's. Linux only.
+double drawingCpuSeconds()
+{
+    double ticks = 0.0;
+    QDir tasks("/proc/self/task");
+    for (const QString& tid : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile stat(tasks.filePath(tid + "/stat"));
+        if (!stat.open(QIODevice::ReadOnly))
+            continue;
+        const QString line = QString::fromLatin1(stat.readAll());
+        const int open = line.indexOf('('), close = line.lastIndexOf(')');
+        if (line.mid(open + 1, close - open - 1) == QLatin1String("ab-stepper"))
+            continue;
+        const QStringList fields = line.mid(close + 2).split(' ');
+        if (fields.size() > 12)
+            ticks += fields[11].toDouble() + fields[12].toDouble(); // utime, stime
+    }
+    return ticks / double(sysconf(_SC_CLK_TCK));
+}
 
 // --measure-frames: plays with the turntable on (so every frame is drawn anew), then
 // prints the frame times and quits. The run's own options come from --scene and --set.
@@ -29,7 +53,9 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
                      [samples](double paint, double interval) { samples->emplace_back(paint, interval); });
     window.setTurntable(true);
     window.controller().play();
-    QTimer::singleShot(int(seconds * 1000), qApp, [samples, &window] {
+    const double cpuStart = drawingCpuSeconds();
+    QTimer::singleShot(int(seconds * 1000), qApp, [samples, &window, cpuStart] {
+        const double cpu = drawingCpuSeconds() - cpuStart;
         auto& s = *samples;
         if (s.size() > 2)
             s.erase(s.begin(), s.begin() + 2); // the first frames include start-up
@@ -45,9 +71,10 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
         };
         const auto st = window.controller().status();
         std::printf("frames %zu; paint ms: median %.1f p95 %.1f max %.1f; interval ms: median %.1f p95 %.1f max %.1f; "
-                    "simulation: %lld steps, step %.1f ms\n",
+                    "drawing CPU per frame %.1f ms; simulation: %lld steps, step %.1f ms\n",
                     s.size(), pct(paint, 0.5), pct(paint, 0.95), pct(paint, 1.0), pct(interval, 0.5),
-                    pct(interval, 0.95), pct(interval, 1.0), st.steps, st.stepSeconds * 1e3);
+                    pct(interval, 0.95), pct(interval, 1.0), s.empty() ? 0.0 : 1e3 * cpu / double(s.size() + 2),
+                    st.steps, st.stepSeconds * 1e3);
         delete samples;
         QCoreApplication::quit();
     });

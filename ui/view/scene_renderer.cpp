@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scene_renderer.h"
 
+#include <QVector2D>
+
 #include <cstddef>
 
 namespace ab::ui {
@@ -186,6 +188,7 @@ void SceneRenderer::draw(const RenderInputs& in)
 
         setCommonUniforms(*ballProgram_, in);
         ballProgram_->setUniformValue("selected", in.selected);
+        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
         ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
         ballVao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_); // every ball in one call
