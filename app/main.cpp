@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// amazeballs: the window. `amazeballs [--scene KEY] [--play] [--measure-frames S]`.
+// amazeballs: the window.
+// `amazeballs [--scene KEY] [--set NAME=VALUE]... [--speed X] [--play] [--measure-frames S]`.
 #include "ui/main_window.h"
 #include "ui/view/ball_view.h"
 
@@ -103,9 +104,11 @@ int main(int argc, char** argv)
     const QCommandLineOption setOption("set", QApplication::translate("main", "Set a constant, NAME=VALUE."),
                                        "NAME=VALUE");
     const QCommandLineOption playOption("play", QApplication::translate("main", "Start playing."));
+    const QCommandLineOption speedOption(
+        "speed", QApplication::translate("main", "Play at X times real time (0.1 to 10)."), "X");
     const QCommandLineOption measureOption(
         "measure-frames", QApplication::translate("main", "Play for S seconds, print frame times, quit."), "S");
-    parser.addOptions({sceneOption, setOption, playOption, measureOption});
+    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption});
     parser.process(app);
 
     ab::ui::MainWindow window;
@@ -122,6 +125,12 @@ int main(int argc, char** argv)
                 values.parseAssignment(assignment.toStdString());
             if (!window.applyValues(values))
                 throw ab::InputError("--set: the values were refused (see the window's status bar)");
+        }
+        if (parser.isSet(speedOption)) {
+            const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
+            if (speed < 0.1 || speed > 10.0)
+                throw ab::InputError("--speed: " + ab::formatNumber(speed) + " is outside [0.1, 10]");
+            window.controller().setSpeed(speed);
         }
     } catch (const ab::InputError& e) {
         std::fprintf(stderr, "amazeballs: %s\n", e.what());

@@ -279,6 +279,7 @@ void MainWindow::runReplaced()
 {
     scene_ = controller_.spec().scene;
     const SceneInfo& info = sceneInfo(scene_);
+    setWindowTitle(tr("Amazeballs - stage %1: %2").arg(info.stage).arg(qs(info.title)));
     const RunSpec& spec = controller_.spec();
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
@@ -413,9 +414,12 @@ void MainWindow::exportInteractively(ChartKind kind, ExportFormat format)
         break;
     }
     const QString dir = lastDirectory_.isEmpty() ? QDir::currentPath() : lastDirectory_;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export"), dir + "/" + suggested, filter);
+    QString chosenFilter;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export"), dir + "/" + suggested, filter, &chosenFilter);
     if (path.isEmpty())
         return;
+    if (QFileInfo(path).suffix().isEmpty()) // a name typed without its type: take the filter's
+        path += chosenFilter.contains("*.svg") ? ".svg" : chosenFilter.contains("*.csv") ? ".csv" : ".png";
     lastDirectory_ = QFileInfo(path).absolutePath();
     try {
         if (format == ExportFormat::Csv)

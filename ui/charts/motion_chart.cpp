@@ -92,7 +92,7 @@ MotionChart::MotionChart(ChartKind kind)
     }
     add(cursor_, QPen(QColor(90, 90, 90), 1.2));
     setMarkerVisible(this, cursor_, false);
-    setNiceRange(timeAxis_, 0.0, tEnd_, 8);
+    applyTimeRange();
     timeAxis_->setLabelFormat("%g");
     valueAxis_->setLabelFormat("%g");
     legend()->setAlignment(Qt::AlignTop);
@@ -160,8 +160,16 @@ void MotionChart::setTimeSpan(double tEnd)
     if (!(std::isfinite(tEnd) && tEnd > 0.0))
         return;
     tEnd_ = tEnd;
-    setNiceRange(timeAxis_, 0.0, tEnd_, 8);
+    applyTimeRange();
     sampleReference();
+}
+
+void MotionChart::applyTimeRange()
+{
+    // About one labelled tick per 80 pixels of plot width (5 before the first layout).
+    const double width = plotArea().width();
+    const int ticks = width > 0.0 ? std::clamp(int(width / 80.0), 3, 10) : 5;
+    setNiceRange(timeAxis_, 0.0, tEnd_, ticks);
 }
 
 const std::vector<double>& MotionChart::column(const MotionTrack& track, int axis) const
@@ -181,6 +189,8 @@ void MotionChart::showTrack(const MotionTrack& track, int columns)
 {
     if (!track.empty() && std::isfinite(track.t().back()) && track.t().back() > tEnd_)
         setTimeSpan(track.t().back());
+    else
+        applyTimeRange(); // the plot may have been resized since
     for (int a : shownAxes_) {
         const QList<QPointF> points = downsampleMinMax(track.t(), column(track, a), columns);
         if (!points.isEmpty()) {
@@ -199,10 +209,13 @@ void MotionChart::updateValueRange(double lo, double hi)
     lo_ = haveRange_ ? std::min(lo_, lo) : lo;
     hi_ = haveRange_ ? std::max(hi_, hi) : hi;
     haveRange_ = true;
-    const double pad = hi_ > lo_ ? 0.05 * (hi_ - lo_) : std::max(1.0, std::abs(hi_) * 0.1);
-    // About one labelled tick per 45 pixels of plot height, so short charts stay legible.
-    const int ticks = std::clamp(int(plotArea().height() / 45.0), 3, 6);
-    setNiceRange(valueAxis_, lo_ - pad, hi_ + pad, ticks);
+    // A little room above and below, never across zero (a height stays above the floor).
+    const double pad = hi_ > lo_ ? 0.01 * (hi_ - lo_) : std::max(1.0, std::abs(hi_) * 0.1);
+    const double lower = lo_ >= 0.0 ? std::max(0.0, lo_ - pad) : lo_ - pad;
+    const double upper = hi_ <= 0.0 ? std::min(0.0, hi_ + pad) : hi_ + pad;
+    // About one labelled tick per 40 pixels of plot height, so short charts stay legible.
+    const int ticks = std::clamp(int(plotArea().height() / 40.0), 4, 8);
+    setNiceRange(valueAxis_, lower, upper, ticks);
 }
 
 void MotionChart::setCursorTime(std::optional<double> t)

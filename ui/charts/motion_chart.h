@@ -66,6 +66,7 @@ public:
 
 private:
     void applyFonts();
+    void applyTimeRange();
     void updateValueRange(double lo, double hi);
     void placeCursor();
     void sampleReference();

@@ -62,7 +62,7 @@ SceneLayout layoutFor(const RunSpec& spec)
     case SceneId::Bounce1d:
         return bounce1dLayout(v);
     case SceneId::Box3d:
-        return cornerBoxLayout(v, v.real("box") / 100.0, 1); // a point for contact; drawn 1% of the box
+        return cornerBoxLayout(v, v.real("box") / 80.0, 1); // a point for contact; drawn at 1/80 of the box
     case SceneId::TwoBalls:
         return cornerBoxLayout(v, v.real("r"), 2);
     case SceneId::ManyBalls:

@@ -29,7 +29,7 @@ Recording::Recording(const SceneLayout& layout, int trackedBall, std::size_t fra
 {
     // A frame holds 6 floats per ball.
     const std::size_t frameBytes = 6 * sizeof(float) * static_cast<std::size_t>(std::max(layout.balls, 1));
-    maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 8);
+    maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 2); // two at least; the start is always kept
 }
 
 void Recording::add(long long step, const State& s)

@@ -3,6 +3,8 @@
 
 #include "ui/charts/nice_ticks.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 
@@ -67,7 +69,8 @@ void addHeightScale(SceneGeometry& g, const SceneLayout& l, const QString& unit)
         line(g.lines, {x - tick, float(y), 0.0f}, {x, float(y), 0.0f}, scaleColour);
         g.labels.push_back({QVector3D(x - 4.0f * tick, float(y), 0.0f), number(y), scaleColour});
     }
-    g.labels.push_back({QVector3D(x, top * 1.06f, 0.0f), QStringLiteral("y (%1)").arg(unit), axisColours[1]});
+    g.labels.push_back({QVector3D(x, top * 1.06f, 0.0f),
+                        QCoreApplication::translate("SceneGeometry", "y (%1)").arg(unit), axisColours[1]});
 }
 
 // Stages 2-4: the twelve edges (the three from the lowest corner in the axes' colours),
@@ -98,7 +101,7 @@ void addBox(SceneGeometry& g, const SceneLayout& l, const QString& unit)
         g.labels.push_back({end, QString::fromLatin1(names[axis]), axisColours[axis]});
     }
     g.labels.push_back({(corner(0) + corner(1)) / 2.0f - QVector3D(0, 0, 0.08f * side),
-                        QStringLiteral("%1 %2").arg(number(side), unit), edgeColour});
+                        QCoreApplication::translate("SceneGeometry", "L = %1 %2").arg(number(side), unit), edgeColour});
 }
 
 } // namespace
