@@ -2,6 +2,7 @@
 #include "run_controller.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace ab::ui {
 
@@ -13,7 +14,22 @@ RunController::RunController(QObject* parent) : QObject(parent)
     frameTimer_.start();
 }
 
-RunController::~RunController() = default;
+RunController::~RunController()
+{
+    retireEngine();
+    for (std::future<void>& f : retiring_)
+        f.wait();
+}
+
+void RunController::retireEngine()
+{
+    if (!engine_)
+        return;
+    std::erase_if(retiring_, [](const std::future<void>& f) {
+        return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+    });
+    retiring_.push_back(std::async(std::launch::async, [old = std::move(engine_)]() mutable { old.reset(); }));
+}
 
 double RunController::realTimeRate(const SceneInfo& scene)
 {
@@ -51,7 +67,7 @@ void RunController::setRun(const RunSpec& spec, long long steps)
 void RunController::startEngine(std::unique_ptr<Simulation> sim)
 {
     const bool wasPlaying = status_.playing;
-    engine_.reset(); // joins the old worker first
+    retireEngine();
     const int balls = sim->start().size();
     selected_ = std::clamp(selected_, 0, std::max(balls - 1, 0));
     engine_ = std::make_unique<RunEngine>(std::move(sim), steps_, selected_);

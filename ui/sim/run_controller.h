@@ -10,7 +10,9 @@
 #include <QObject>
 #include <QTimer>
 
+#include <future>
 #include <memory>
+#include <vector>
 
 namespace ab::ui {
 
@@ -60,11 +62,14 @@ signals:
 
 private:
     void startEngine(std::unique_ptr<Simulation> sim);
+    // Ends the current engine off the GUI thread: its worker may be inside a long step.
+    void retireEngine();
 
     std::unique_ptr<RunSpec> spec_;
     long long steps_ = 0;
     SceneLayout layout_;
     std::unique_ptr<RunEngine> engine_;
+    std::vector<std::future<void>> retiring_; // joined at the latest in the destructor
     EngineStatus status_;
     double speed_ = 1.0;
     int selected_ = 0;
