@@ -230,8 +230,8 @@ std::optional<QString> MainWindow::startRun(const Setup& setup)
 void MainWindow::showScene(SceneId scene)
 {
     const Setup& setup = setupFor(scene);
-    if (startRun(setup)) {
-        navigator_->setCurrent(scene_);
+    if (const auto error = startRun(setup)) {
+        navigator_->setCurrent(scene_); // stay on the stage that runs
         return;
     }
     scene_ = scene;
