@@ -22,6 +22,11 @@ const std::array commands{
     Command{"list", "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
     Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
+    Command{"chart",
+            "chart SCENE [options]     the window's chart of one ball as PNG or SVG, headless:\n"
+            "                            --chart position|velocity|energy --out FILE.png|FILE.svg [--ball B]\n"
+            "                            [--width W] [--height H] and the run options (B = 1 is the first ball)",
+            chartCommand},
     Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
                          "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},

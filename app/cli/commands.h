@@ -12,5 +12,6 @@ int listCommand(Args& args, std::ostream& out, std::ostream& err);
 int runCommand(Args& args, std::ostream& out, std::ostream& err);
 int stabilityCommand(Args& args, std::ostream& out, std::ostream& err);
 int studyCommand(Args& args, std::ostream& out, std::ostream& err);
+int chartCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

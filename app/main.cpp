@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+// amazeballs: the window.
+// `amazeballs [--scene KEY] [--set NAME=VALUE]... [--speed X] [--play] [--measure-frames S]`.
+#include "ui/main_window.h"
+#include "ui/view/ball_view.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFile>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+// CPU seconds used so far by this process's threads other than the stepping thread
+// ("ab-stepper"): the window's own thread and the software renderer's. Linux only.
+double drawingCpuSeconds()
+{
+    double ticks = 0.0;
+    QDir tasks("/proc/self/task");
+    for (const QString& tid : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile stat(tasks.filePath(tid + "/stat"));
+        if (!stat.open(QIODevice::ReadOnly))
+            continue;
+        const QString line = QString::fromLatin1(stat.readAll());
+        const int open = line.indexOf('('), close = line.lastIndexOf(')');
+        if (line.mid(open + 1, close - open - 1) == QLatin1String("ab-stepper"))
+            continue;
+        const QStringList fields = line.mid(close + 2).split(' ');
+        if (fields.size() > 12)
+            ticks += fields[11].toDouble() + fields[12].toDouble(); // utime, stime
+    }
+    return ticks / double(sysconf(_SC_CLK_TCK));
+}
+
+// --measure-frames: plays with the turntable on (so every frame is drawn anew), then
+// prints the frame times and quits. The run's own options come from --scene and --set.
+void measureFrames(ab::ui::MainWindow& window, double seconds)
+{
+    auto* samples = new std::vector<std::pair<double, double>>;
+    ab::ui::BallView* view = window.view();
+    if (!view) {
+        std::fprintf(stderr, "amazeballs: --measure-frames needs the 3D view (an OpenGL platform)\n");
+        QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
+        return;
+    }
+    QObject::connect(view, &ab::ui::BallView::framePainted, view,
+                     [samples](double paint, double interval) { samples->emplace_back(paint, interval); });
+    window.setTurntable(true);
+    window.controller().play();
+    const double cpuStart = drawingCpuSeconds();
+    QTimer::singleShot(int(seconds * 1000), qApp, [samples, &window, cpuStart] {
+        const double cpu = drawingCpuSeconds() - cpuStart;
+        auto& s = *samples;
+        if (s.size() > 2)
+            s.erase(s.begin(), s.begin() + 2); // the first frames include start-up
+        std::vector<double> paint, interval;
+        for (auto [p, i] : s) {
+            paint.push_back(p);
+            interval.push_back(i);
+        }
+        std::sort(paint.begin(), paint.end());
+        std::sort(interval.begin(), interval.end());
+        auto pct = [](const std::vector<double>& v, double q) {
+            return v.empty() ? 0.0 : v[std::size_t(q * (v.size() - 1))];
+        };
+        const auto st = window.controller().status();
+        std::printf("frames %zu; paint ms: median %.1f p95 %.1f max %.1f; interval ms: median %.1f p95 %.1f max %.1f; "
+                    "drawing CPU per frame %.1f ms; simulation: %lld steps, step %.1f ms\n",
+                    s.size(), pct(paint, 0.5), pct(paint, 0.95), pct(paint, 1.0), pct(interval, 0.5),
+                    pct(interval, 0.95), pct(interval, 1.0), s.empty() ? 0.0 : 1e3 * cpu / double(s.size() + 2),
+                    st.steps, st.stepSeconds * 1e3);
+        delete samples;
+        QCoreApplication::quit();
+    });
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // Every GL context the window makes is OpenGL 3.3 core (the view's shaders need it).
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("Amazeballs");
+    QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate("main", "Bouncing and colliding balls, stage by stage."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption sceneOption("scene", QApplication::translate("main", "Start on stage KEY."), "KEY");
+    const QCommandLineOption setOption("set", QApplication::translate("main", "Set a constant, NAME=VALUE."),
+                                       "NAME=VALUE");
+    const QCommandLineOption playOption("play", QApplication::translate("main", "Start playing."));
+    const QCommandLineOption speedOption(
+        "speed", QApplication::translate("main", "Play at X times real time (0.1 to 10)."), "X");
+    const QCommandLineOption measureOption(
+        "measure-frames", QApplication::translate("main", "Play for S seconds, print frame times, quit."), "S");
+    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption});
+    parser.process(app);
+
+    ab::ui::MainWindow window;
+    try {
+        if (parser.isSet(sceneOption)) {
+            const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
+            if (!scene)
+                throw ab::InputError("--scene: unknown scene '" + parser.value(sceneOption).toStdString() + "'");
+            window.showScene(scene->id);
+        }
+        if (!parser.values(setOption).isEmpty()) {
+            ab::ParamValues values = window.controller().spec().params;
+            for (const QString& assignment : parser.values(setOption))
+                values.parseAssignment(assignment.toStdString());
+            if (!window.applyValues(values))
+                throw ab::InputError("--set: the values were refused (see the window's status bar)");
+        }
+        if (parser.isSet(speedOption)) {
+            const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
+            if (speed < 0.1 || speed > 10.0)
+                throw ab::InputError("--speed: " + ab::formatNumber(speed) + " is outside [0.1, 10]");
+            window.controller().setSpeed(speed);
+        }
+    } catch (const ab::InputError& e) {
+        std::fprintf(stderr, "amazeballs: %s\n", e.what());
+        return 2;
+    }
+    window.resize(1400, 900);
+    window.show();
+    if (parser.isSet(measureOption))
+        measureFrames(window, std::max(1.0, parser.value(measureOption).toDouble()));
+    else if (parser.isSet(playOption))
+        window.controller().play();
+    return app.exec();
+}

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// `amazeballs-cli chart` in process: it writes the window's chart as a PNG that decodes
+// and shows something, and as an SVG that parses with an <svg> root; bad input exits
+// with status 2, one line naming it, and no file.
+#include "app/cli/cli.h"
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include <set>
+#include <sstream>
+
+namespace {
+
+struct Result {
+    int status;
+    std::string out, err;
+};
+
+Result cli(std::vector<std::string> args)
+{
+    std::ostringstream out, err;
+    const int status = ab::cli::run(args, out, err);
+    return {status, out.str(), err.str()};
+}
+
+// Distinct colours in a coarse grid of the image: a blank image has one.
+int distinctColours(const QImage& image)
+{
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 7)
+        for (int x = 0; x < image.width(); x += 7)
+            colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+QString svgRoot(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    QXmlStreamReader xml(&f);
+    while (!xml.atEnd()) {
+        if (xml.readNext() == QXmlStreamReader::StartElement)
+            return xml.name().toString();
+    }
+    return xml.hasError() ? QString("error: ") + xml.errorString() : QString();
+}
+
+} // namespace
+
+class CliChart : public QObject {
+    Q_OBJECT
+
+private slots:
+    void writesAVelocityChartAsPng()
+    {
+        QTemporaryDir dir;
+        const QString png = dir.filePath("velocity.png");
+        const Result r = cli(
+            {"chart", "box3d", "--chart", "velocity", "--out", png.toStdString(), "--width", "900", "--height", "600"});
+        QCOMPARE(r.status, 0);
+        QImage image(png);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(900, 600));
+        QVERIFY(distinctColours(image) > 8);
+        // The three axis colours of the chart's lines are there (vx red, vy green, vz blue).
+        bool red = false, green = false, blue = false;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                red = red || (c.red() > 180 && c.green() < 80 && c.blue() < 80);
+                green = green || (c.green() > 130 && c.red() < 90 && c.blue() < 90);
+                blue = blue || (c.blue() > 150 && c.red() < 80 && c.green() < 150);
+            }
+        QVERIFY(red && green && blue);
+    }
+
+    void writesAPositionChartAsSvg()
+    {
+        QTemporaryDir dir;
+        const QString svg = dir.filePath("drop.svg");
+        QCOMPARE(cli({"chart", "bounce1d", "--chart", "position", "--out", svg.toStdString(), "--steps", "500"}).status,
+                 0);
+        QCOMPARE(svgRoot(svg), QString("svg"));
+    }
+
+    void chartsTheChosenBallOfTwo()
+    {
+        QTemporaryDir dir;
+        const QString png = dir.filePath("ball2.png");
+        QCOMPARE(cli({"chart", "two-balls", "--chart", "energy", "--ball", "2", "--out", png.toStdString(), "--steps",
+                      "300"})
+                     .status,
+                 0);
+        QVERIFY(!QImage(png).isNull());
+    }
+
+    void badInputExitsWith2AndWritesNothing_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("unknown chart") << QStringList{"--chart", "speed"} << "--chart: unknown chart 'speed'";
+        QTest::newRow("missing chart") << QStringList{} << "missing --chart";
+        QTest::newRow("image type") << QStringList{"--chart", "position", "--ext", "jpg"} << "must end in .png or .svg";
+        QTest::newRow("ball out of range")
+            << QStringList{"--chart", "position", "--ball", "2"} << "--ball: 2 is outside";
+        QTest::newRow("bad parameter") << QStringList{"--chart", "position", "--set", "k=7"} << "k: 7 is outside";
+        QTest::newRow("tiny width") << QStringList{"--chart", "position", "--width", "5"} << "--width";
+    }
+
+    void badInputExitsWith2AndWritesNothing()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        QTemporaryDir dir;
+        QString ext = "png";
+        std::vector<std::string> a{"chart", "box3d"};
+        for (int i = 0; i < args.size(); ++i) {
+            if (args[i] == "--ext") {
+                ext = args[++i];
+                continue;
+            }
+            a.push_back(args[i].toStdString());
+        }
+        a.push_back("--out");
+        a.push_back(dir.filePath("out." + ext).toStdString());
+        const Result r = cli(a);
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.find(mentions.toStdString()) != std::string::npos, r.err.c_str());
+        QCOMPARE(std::count(r.err.begin(), r.err.end(), '\n'), 1L);
+        QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+    }
+
+    void unwritableFolderExitsWith2BeforeRunning()
+    {
+        const Result r = cli({"chart", "box3d", "--chart", "position", "--out", "/nonexistent-dir/x.png"});
+        QCOMPARE(r.status, 2);
+        QVERIFY(r.err.find("does not exist") != std::string::npos);
+    }
+};
+
+QTEST_MAIN(CliChart)
+#include "test_cli_chart.moc"

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+// The 3D view in a real X server (Xvfb, Mesa llvmpipe): the framebuffer shows each ball
+// in its colour where the simulation puts it, projected with the view's own camera
+// matrices, and the image is not blank; a click selects the ball under it; with keyboard
+// focus the arrow keys move the camera as the report's program does. Skipped where the
+// platform has no OpenGL windows (offscreen, minimal).
+#include "ui/main_window.h"
+#include "ui/view/ball_view.h"
+
+#include <QGuiApplication>
+#include <QtTest>
+
+#include <set>
+
+using ab::SceneId;
+using ab::ui::MainWindow;
+
+namespace {
+
+// Window pixel of world point p, from the camera's own view and projection matrices.
+QPointF projectWithCamera(const ab::ui::BallView& view, const QVector3D& p)
+{
+    const float aspect = float(view.width()) / float(view.height());
+    const QVector4D clip = view.camera().projection(aspect) * view.camera().view() * QVector4D(p, 1.0f);
+    const QVector3D ndc = clip.toVector3DAffine();
+    return QPointF((ndc.x() + 1.0) * 0.5 * view.width(), (1.0 - ndc.y()) * 0.5 * view.height());
+}
+
+// The ball's centre in the current frame of the run, as the worker recorded it.
+QVector3D ballCentre(MainWindow& w, int ball)
+{
+    QVector3D c;
+    w.controller().engine().read([&](const ab::ui::Recording&, const ab::ui::Frame& f) {
+        const auto i = std::size_t(3 * ball);
+        c = QVector3D(f.p[i], f.p[i + 1], f.p[i + 2]);
+    });
+    return c;
+}
+
+// A lit ball is its own colour scaled by the light: compare hues, not exact values.
+bool looksLike(const QColor& pixel, QRgb ballRgb)
+{
+    const QColor ball = QColor::fromRgb(ballRgb);
+    if (pixel.saturationF() < 0.3f)
+        return false;
+    const int dh = std::abs(pixel.hsvHue() - ball.hsvHue());
+    return std::min(dh, 360 - dh) < 25;
+}
+
+// Waits until the view has drawn what it holds now.
+void waitForFrame(ab::ui::BallView* view)
+{
+    QSignalSpy painted(view, &ab::ui::BallView::framePainted);
+    view->requestUpdate();
+    QTRY_VERIFY_WITH_TIMEOUT(painted.count() >= 1, 10000);
+}
+
+} // namespace
+
+class UiRender : public QObject {
+    Q_OBJECT
+
+private:
+    std::unique_ptr<MainWindow> window_;
+
+    MainWindow& open(SceneId scene)
+    {
+        const QString platform = QGuiApplication::platformName();
+        if (platform == "offscreen" || platform == "minimal")
+            return *window_; // the caller skips
+        window_ = std::make_unique<MainWindow>();
+        window_->resize(1400, 900);
+        window_->show();
+        window_->showScene(scene);
+        return *window_;
+    }
+
+private slots:
+    void init()
+    {
+        const QString platform = QGuiApplication::platformName();
+        if (platform == "offscreen" || platform == "minimal")
+            QSKIP("no OpenGL windows on this platform; run under xvfb-run with QT_QPA_PLATFORM=xcb");
+    }
+
+    void cleanup() { window_.reset(); }
+
+    void eachBallIsDrawnWhereTheSimulationPutsIt()
+    {
+        MainWindow& w = open(SceneId::TwoBalls);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(view);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY(view->isExposed());
+        // Let the balls fly apart from their start and come to a moment worth checking.
+        for (int i = 0; i < 150; ++i)
+            w.controller().stepOnce();
+        QTRY_COMPARE_WITH_TIMEOUT(w.controller().status().steps, 150LL, 10000);
+        w.controller().poll();
+        waitForFrame(view);
+        QVERIFY2(view->glError().isEmpty(), qPrintable(view->glError()));
+        const QImage image = view->grabFramebuffer().scaled(view->size()); // device to window pixels
+        QVERIFY(!image.isNull());
+
+        const std::vector<unsigned> colours = ab::ui::ballColours(w.controller().spec(), 2);
+        for (int ball = 0; ball < 2; ++ball) {
+            const QVector3D centre = ballCentre(w, ball);
+            const QPointF pixel = projectWithCamera(*view, centre);
+            QVERIFY(QRectF(QPointF(0, 0), QSizeF(view->size())).contains(pixel));
+            const QColor seen = image.pixelColor(pixel.toPoint());
+            QVERIFY2(looksLike(seen, colours[std::size_t(ball)]),
+                     qPrintable(QString("ball %1 at (%2, %3): pixel %4, ball colour #%5")
+                                    .arg(ball + 1)
+                                    .arg(pixel.x())
+                                    .arg(pixel.y())
+                                    .arg(seen.name())
+                                    .arg(colours[std::size_t(ball)], 6, 16, QChar('0'))));
+        }
+        // The view's own projection agrees with the camera's matrices.
+        QPointF own;
+        QVERIFY(view->ballPixel(0, own));
+        QVERIFY((own - projectWithCamera(*view, ballCentre(w, 0))).manhattanLength() < 1.0);
+    }
+
+    void theImageIsNotBlank()
+    {
+        MainWindow& w = open(SceneId::ManyBalls);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(view);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        const QImage image = view->grabFramebuffer();
+        std::set<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 4)
+            for (int x = 0; x < image.width(); x += 4)
+                colours.insert(image.pixel(x, y));
+        QVERIFY2(colours.size() > 100, qPrintable(QString::number(colours.size())));
+    }
+
+    void aClickSelectsTheBallUnderIt()
+    {
+        MainWindow& w = open(SceneId::TwoBalls);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        QCOMPARE(w.controller().selectedBall(), 0);
+        const QPoint pixel = projectWithCamera(*view, ballCentre(w, 1)).toPoint();
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, pixel);
+        QTRY_COMPARE(w.controller().selectedBall(), 1);
+        QCOMPARE(view->selected(), 1);
+    }
+
+    void arrowKeysMoveTheCameraAsTheReportAndNotTheRun()
+    {
+        MainWindow& w = open(SceneId::ManyBalls);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        // Focus the view as a click does.
+        view->container()->setFocus();
+        view->requestActivate();
+        QTRY_VERIFY(view->hasKeyFocus());
+        const QVector3D before = view->camera().eye();
+        QTest::keyClick(view, Qt::Key_Left); // Appendix D: camera.position.x -= 2 (box 100)
+        const QVector3D after = view->camera().eye();
+        QVERIFY(std::abs(after.x() - (before.x() - 2.0f)) < 1e-3f);
+        QVERIFY(std::abs(after.z() - before.z()) < 1e-3f);
+        QCOMPARE(w.controller().status().steps, 0LL); // Right/Left do not reach the transport
+        QTest::keyClick(view, Qt::Key_Up);            // camera.position.z -= 2
+        QVERIFY(std::abs(view->camera().eye().z() - (before.z() - 2.0f)) < 1e-3f);
+    }
+};
+
+QTEST_MAIN(UiRender)
+#include "test_ui_render.moc"

@@ -1,0 +1,342 @@
+// SPDX-License-Identifier: MIT
+// The window on the offscreen platform (no OpenGL there: a placeholder stands where the
+// 3D view goes): the navigator switches stages, the constants panel shows exactly the
+// stage's table for the chosen model, refused input is shown and never applied, the
+// transport moves simulated time by whole steps, and the exports write valid files.
+#include "ui/charts/motion_chart.h"
+#include "ui/main_window.h"
+#include "ui/panels/parameter_panel.h"
+#include "ui/panels/run_options_panel.h"
+#include "ui/panels/stage_navigator.h"
+#include "ui/panels/status_readout.h"
+#include "ui/panels/transport_bar.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include <set>
+
+using ab::SceneId;
+using ab::ui::MainWindow;
+
+namespace {
+
+// Types `text` into the constant `key` and finishes the edit (Return), as a user does.
+void typeInto(QLineEdit* field, const QString& text)
+{
+    QVERIFY(field);
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
+
+std::vector<std::string> expectedKeys(SceneId id, ab::ModelKind model)
+{
+    const unsigned mask = model == ab::ModelKind::Report ? ab::ReportModel : ab::PhysicalModel;
+    std::vector<std::string> keys;
+    for (const ab::ParamSpec& p : ab::sceneInfo(id).params)
+        if (p.usedBy(mask))
+            keys.push_back(p.key);
+    return keys;
+}
+
+double simulatedTime(MainWindow& w)
+{
+    return w.controller().status().t;
+}
+
+} // namespace
+
+class UiWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void opensOnStage1WithAPlaceholderForThe3DView()
+    {
+        MainWindow w;
+        QCOMPARE(w.scene(), SceneId::Bounce1d);
+        QVERIFY(w.view() == nullptr);
+        auto* placeholder = w.findChild<QLabel*>("viewPlaceholder");
+        QVERIFY(placeholder);
+        QVERIFY(placeholder->text().contains("OpenGL"));
+    }
+
+    void navigatorSwitchesStagesInTheReportsOrder()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        ab::ui::StageNavigator* nav = w.navigator();
+        QVERIFY(nav->text().contains("eq 2.16")); // stage 1's typo note
+        QVERIFY(nav->text().contains("(2.3)"));
+        nav->next();
+        QCOMPARE(w.scene(), SceneId::Box3d);
+        QCOMPARE(w.controller().spec().scene, SceneId::Box3d);
+        QVERIFY(nav->text().contains("One ball in a box"));
+        QTest::mouseClick(nav->findChild<QPushButton*>("stage-many-balls"), Qt::LeftButton);
+        QCOMPARE(w.scene(), SceneId::ManyBalls);
+        QVERIFY(nav->text().contains("eq 2.31")); // stage 4's typo note
+        nav->previous();
+        QCOMPARE(w.scene(), SceneId::TwoBalls);
+        QTest::keyClick(&w, Qt::Key_1);
+        QCOMPARE(w.scene(), SceneId::Bounce1d);
+        QTest::keyClick(&w, Qt::Key_4);
+        QCOMPARE(w.scene(), SceneId::ManyBalls);
+    }
+
+    void constantsPanelShowsExactlyTheStagesParameters_data()
+    {
+        QTest::addColumn<int>("scene");
+        for (const ab::SceneInfo* s : ab::allScenes())
+            QTest::newRow(s->key.c_str()) << int(s->id);
+    }
+
+    void constantsPanelShowsExactlyTheStagesParameters()
+    {
+        QFETCH(int, scene);
+        const SceneId id = SceneId(scene);
+        MainWindow w;
+        w.showScene(id);
+        QCOMPARE(w.parameters()->shownKeys(), expectedKeys(id, ab::ModelKind::Report));
+        if (id == SceneId::Bounce1d) {
+            // One axis: every constant is a number, no x/z vector anywhere.
+            for (const std::string& key : w.parameters()->shownKeys())
+                QVERIFY(!w.parameters()->field(key)->text().contains(','));
+        }
+        if (id == SceneId::ManyBalls)
+            QCOMPARE(w.parameters()->field("n")->text(), QString("150"));
+        // The tooltip names the equation and the range.
+        const ab::ParamSpec& first = ab::sceneInfo(id).params.front();
+        const QString tip = w.parameters()->field(first.key)->toolTip();
+        QVERIFY(tip.contains(QString::fromStdString(first.equation)));
+        QVERIFY(tip.contains("Range"));
+    }
+
+    void aValidConstantIsAppliedAndRestartsTheRun()
+    {
+        MainWindow w;
+        w.show();
+        typeInto(w.parameters()->field("k"), "0.5");
+        QCOMPARE(w.controller().spec().params.real("k"), 0.5);
+        QCOMPARE(w.parameters()->errorText(), QString());
+        QCOMPARE(simulatedTime(w), 0.0);
+        QTest::mouseClick(w.findChild<QPushButton*>("reportValues"), Qt::LeftButton);
+        QCOMPARE(w.controller().spec().params.real("k"), 0.6);
+        QCOMPARE(w.parameters()->field("k")->text(), QString("0.6"));
+    }
+
+    void anInvalidConstantIsRefusedVisiblyAndNotApplied_data()
+    {
+        QTest::addColumn<int>("scene");
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("out of range") << int(SceneId::Bounce1d) << "k"
+                                      << "2"
+                                      << "k: 2 is outside";
+        QTest::newRow("not a number") << int(SceneId::Bounce1d) << "h0"
+                                      << "high"
+                                      << "h0: 'high'";
+        QTest::newRow("not finite") << int(SceneId::Box3d) << "g"
+                                    << "inf"
+                                    << "g: 'inf'";
+        QTest::newRow("outside the box") << int(SceneId::Box3d) << "p0"
+                                         << "400,5,5"
+                                         << "outside the box";
+        QTest::newRow("box too small") << int(SceneId::ManyBalls) << "box"
+                                       << "1.5"
+                                       << "leaves no room";
+    }
+
+    void anInvalidConstantIsRefusedVisiblyAndNotApplied()
+    {
+        QFETCH(int, scene);
+        QFETCH(QString, key);
+        QFETCH(QString, text);
+        QFETCH(QString, mentions);
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId(scene));
+        const ab::ParamValues before = w.controller().spec().params;
+        w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 1LL);
+        QLineEdit* field = w.parameters()->field(key.toStdString());
+        typeInto(field, text);
+        QVERIFY2(w.parameters()->errorText().contains(mentions), qPrintable(w.parameters()->errorText()));
+        QVERIFY(field->property("refused").toBool());
+        QVERIFY(w.controller().spec().params == before); // nothing applied
+        QCOMPARE(w.controller().status().steps, 1LL);    // and the run went on untouched
+    }
+
+    void aRunOptionTheCoreRefusesKeepsThePreviousRun()
+    {
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::ManyBalls);
+        // The report's stage 4 advances one frame per step; the core refuses any other dt.
+        typeInto(w.findChild<QLineEdit*>("dtField"), "0.5");
+        QVERIFY(w.runOptions()->errorText().contains("one frame"));
+        QVERIFY(w.statusBar()->currentMessage().contains("one frame"));
+        QVERIFY(!w.controller().spec().dt.has_value());
+        QCOMPARE(w.findChild<QLineEdit*>("dtField")->text(), QString());
+    }
+
+    void modelAndIntegratorListsComeFromTheCore()
+    {
+        MainWindow w;
+        QComboBox* integrators = w.runOptions()->integratorBox();
+        QCOMPARE(integrators->count(), int(ab::allIntegrators().size()));
+        QVERIFY(!integrators->isEnabled()); // the report model has one scheme per stage
+        QCOMPARE(w.runOptions()->modelBox()->count(), 2);
+    }
+
+    void stepPlayPauseAndResetMoveSimulatedTime()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showScene(SceneId::Box3d); // dt = 0.01 s
+        QTest::keyClick(&w, Qt::Key_Right);
+        QTRY_COMPARE(w.controller().status().steps, 1LL);
+        QTest::mouseClick(w.transport()->stepButton(), Qt::LeftButton);
+        QTRY_COMPARE(w.controller().status().steps, 2LL);
+        QVERIFY(std::abs(simulatedTime(w) - 0.02) < 1e-12);
+
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(w.controller().playing());
+        QTRY_VERIFY(w.controller().status().steps > 5);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QTRY_VERIFY(!w.controller().status().playing);
+        const long long paused = w.controller().status().steps;
+        QTest::qWait(200);
+        QCOMPARE(w.controller().status().steps, paused); // paused means no steps
+
+        QTest::keyClick(&w, Qt::Key_R);
+        QCOMPARE(w.controller().status().steps, 0LL);
+        QCOMPARE(simulatedTime(w), 0.0);
+    }
+
+    void speedRunsFromATenthToTenTimesRealTime()
+    {
+        MainWindow w;
+        QSlider* speed = w.transport()->speedSlider();
+        speed->setValue(speed->minimum());
+        QVERIFY(std::abs(w.controller().speed() - 0.1) < 1e-12);
+        speed->setValue(speed->maximum());
+        QVERIFY(std::abs(w.controller().speed() - 10.0) < 1e-12);
+    }
+
+    void timeSliderScrubsBackAndTheChartCursorFollows()
+    {
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        for (int i = 0; i < 100; ++i)
+            w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 100LL);
+        w.controller().poll();
+        QSlider* time = w.transport()->timeSlider();
+        time->setValue(time->maximum() / 2);
+        QVERIFY(w.transport()->viewTime().has_value());
+        QVERIFY(std::abs(*w.transport()->viewTime() - 50.0) < 0.1);
+        const QList<QPointF> cursor = w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points();
+        QCOMPARE(cursor.size(), 2);
+        QVERIFY(std::abs(cursor[0].x() - 50.0) < 0.1);
+        time->setValue(time->maximum());
+        QVERIFY(!w.transport()->viewTime().has_value()); // the right end is live
+    }
+
+    void chartsFollowTheChosenBall()
+    {
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::TwoBalls);
+        w.findChild<QSpinBox*>("ballSpin")->setValue(2);
+        QCOMPARE(w.controller().selectedBall(), 1);
+        QCOMPARE(w.charts()->chart(ab::ui::ChartKind::Position)->title(), QString("Position of ball 2"));
+        // Ball 2 starts at z = 298 (Appendix C); its chart starts there after one step.
+        w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 1LL);
+        w.controller().poll();
+        QTRY_VERIFY(!w.charts()->chart(ab::ui::ChartKind::Position)->line(2)->points().isEmpty());
+        QCOMPARE(w.charts()->chart(ab::ui::ChartKind::Position)->line(2)->points().front().y(), 298.0);
+    }
+
+    void exportWritesAValidPngSvgAndCsv()
+    {
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Box3d);
+        for (int i = 0; i < 300; ++i)
+            w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 300LL);
+        w.controller().poll();
+        QTemporaryDir dir;
+        const QString png = dir.filePath("position.png");
+        w.exportChartTo(ab::ui::ChartKind::Position, png);
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        std::set<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 5)
+            for (int x = 0; x < image.width(); x += 5)
+                colours.insert(image.pixel(x, y));
+        QVERIFY(colours.size() > 8); // not a uniform image
+
+        const QString svg = dir.filePath("velocity.svg");
+        w.exportChartTo(ab::ui::ChartKind::Velocity, svg);
+        QFile file(svg);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QXmlStreamReader xml(&file);
+        while (!xml.atEnd() && xml.readNext() != QXmlStreamReader::StartElement) {
+        }
+        QCOMPARE(xml.name().toString(), QString("svg"));
+        while (!xml.atEnd())
+            xml.readNext();
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+
+        const QString csv = dir.filePath("data.csv");
+        w.exportDataTo(csv);
+        QFile data(csv);
+        QVERIFY(data.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(data.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.front(), QString("t,ball,x,y,z,vx,vy,vz,energy_per_mass"));
+        QCOMPARE(lines.size(), 1 + 300);                     // the 300 final states
+        QVERIFY(lines[1].startsWith("0,0,2,20,2,10,0,15,")); // Appendix B's start
+    }
+
+    void exportToAFolderThatDoesNotExistIsRefused()
+    {
+        MainWindow w;
+        QVERIFY_THROWS_EXCEPTION(ab::InputError, w.exportChartTo(ab::ui::ChartKind::Energy, "/nonexistent-dir/e.png"));
+        QVERIFY_THROWS_EXCEPTION(ab::InputError,
+                                 w.exportChartTo(ab::ui::ChartKind::Energy, QDir::tempPath() + "/e.jpg"));
+        QVERIFY_THROWS_EXCEPTION(ab::InputError, w.exportViewTo(QDir::tempPath() + "/view.png")); // no view here
+    }
+
+    void statusBarShowsTimeAndEnergyInTheScenesUnits()
+    {
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 1LL);
+        w.controller().poll();
+        QTRY_COMPARE(w.readout()->timeText(), QString("t = 1.00 step"));
+        // E/m at rest at h0 = 2000 under g = 0.0982: 196.4; after one step of eq 2.15-2.16
+        // the ball still stands at 2000 with v = -0.0982: 196.4 + 0.0982^2 / 2.
+        QVERIFY(std::abs(w.controller().status().energy - (196.4 + 0.0982 * 0.0982 / 2)) < 1e-9);
+    }
+};
+
+QTEST_MAIN(UiWindow)
+#include "test_ui_window.moc"

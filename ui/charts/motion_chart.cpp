@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+#include "motion_chart.h"
+
+#include "downsample.h"
+#include "nice_ticks.h"
+
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QPen>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ab::ui {
+
+namespace {
+
+// x, y, z in the colours of the 3D view's axis triad.
+const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
+const QColor energyColour(0x8e, 0x44, 0xad);
+
+constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
+    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"}};
+
+void setMarkerVisible(QChart* chart, QLineSeries* series, bool visible)
+{
+    for (QLegendMarker* m : chart->legend()->markers(series))
+        m->setVisible(visible);
+}
+
+// [lo, hi] widened to whole ticks, with ticks anchored at zero.
+void setNiceRange(QValueAxis* axis, double lo, double hi, int ticks)
+{
+    if (!(hi > lo))
+        return;
+    const double step = niceTickStep(hi - lo, ticks);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(step);
+    axis->setRange(std::floor(lo / step) * step, std::ceil(hi / step) * step);
+}
+
+QString squared(const QString& unit)
+{
+    return unit == "1" ? unit : unit + QString::fromUtf8("\u00b2");
+}
+
+} // namespace
+
+const std::vector<ChartKind>& allChartKinds()
+{
+    static const std::vector<ChartKind> kinds = {ChartKind::Position, ChartKind::Velocity, ChartKind::Energy};
+    return kinds;
+}
+
+std::string_view chartKey(ChartKind kind)
+{
+    for (const auto& [k, key] : chartKeys)
+        if (k == kind)
+            return key;
+    throw std::logic_error("chart kind without a key");
+}
+
+std::optional<ChartKind> parseChartKind(std::string_view key)
+{
+    for (const auto& [k, name] : chartKeys)
+        if (name == key)
+            return k;
+    return std::nullopt;
+}
+
+MotionChart::MotionChart(ChartKind kind)
+    : kind_(kind), timeAxis_(new QValueAxis), valueAxis_(new QValueAxis), cursor_(new QLineSeries)
+{
+    setTheme(QChart::ChartThemeLight); // before the fonts: a theme resets them
+    addAxis(timeAxis_, Qt::AlignBottom);
+    addAxis(valueAxis_, Qt::AlignLeft);
+    auto add = [this](QLineSeries* s, const QPen& pen) {
+        addSeries(s);
+        s->attachAxis(timeAxis_);
+        s->attachAxis(valueAxis_);
+        s->setPen(pen); // after addSeries: adding applies the theme's pen
+        return s;
+    };
+    for (int a = 0; a < 3; ++a) {
+        const QColor colour = kind == ChartKind::Energy ? energyColour : axisColours[a];
+        lines_[a] = add(new QLineSeries, QPen(colour, 2.0));
+        QPen dashed(colour.darker(130), 1.6, Qt::DashLine);
+        references_[a] = add(new QLineSeries, dashed);
+        setMarkerVisible(this, references_[a], false);
+    }
+    add(cursor_, QPen(QColor(90, 90, 90), 1.2));
+    setMarkerVisible(this, cursor_, false);
+    applyTimeRange();
+    timeAxis_->setLabelFormat("%g");
+    valueAxis_->setLabelFormat("%g");
+    legend()->setAlignment(Qt::AlignTop);
+    setMargins(QMargins(4, 4, 8, 4));
+    applyFonts();
+}
+
+void MotionChart::applyFonts()
+{
+    QFont title = font();
+    title.setPointSizeF(11.0);
+    title.setBold(true);
+    setTitleFont(title);
+    QFont labels = font();
+    labels.setPointSizeF(9.5);
+    for (QValueAxis* axis : {timeAxis_, valueAxis_}) {
+        axis->setLabelsFont(labels);
+        axis->setTitleFont(labels);
+    }
+    legend()->setFont(labels);
+}
+
+void MotionChart::configure(const SceneInfo& scene, int ball)
+{
+    static const char* names[3][3] = {{"x", "y", "z"}, {"vx", "vy", "vz"}, {"E/m", "", ""}};
+    shownAxes_ = kind_ == ChartKind::Energy ? std::vector<int>{0}
+                 : scene.axes == 1          ? std::vector<int>{1}
+                                            : std::vector<int>{0, 1, 2};
+    const QString time = QString::fromStdString(scene.timeUnit);
+    const QString length = QString::fromStdString(scene.lengthUnit);
+    const QString who = scene.ballCount == 1 ? tr("the ball") : tr("ball %1").arg(ball + 1);
+    switch (kind_) {
+    case ChartKind::Position:
+        setTitle(tr("Position of %1").arg(who));
+        valueAxis_->setTitleText(tr("position (%1)").arg(length));
+        break;
+    case ChartKind::Velocity:
+        setTitle(tr("Velocity of %1").arg(who));
+        valueAxis_->setTitleText(tr("velocity (%1/%2)").arg(length, time));
+        break;
+    case ChartKind::Energy:
+        setTitle(tr("Energy per unit mass, all balls (%1/%2)").arg(squared(length), squared(time)));
+        valueAxis_->setTitleText(tr("E/m"));
+        break;
+    }
+    timeAxis_->setTitleText(tr("t (%1)").arg(time));
+    const int row = static_cast<int>(kind_);
+    for (int a = 0; a < 3; ++a) {
+        const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
+        lines_[a]->clear();
+        lines_[a]->setName(QString::fromLatin1(names[row][a]));
+        lines_[a]->setVisible(shown);
+        setMarkerVisible(this, lines_[a], shown);
+        references_[a]->clear();
+        references_[a]->setName(lines_[a]->name() + tr(" (closed form)"));
+    }
+    haveRange_ = false;
+    setNiceRange(valueAxis_, 0.0, 1.0, 6);
+    sampleReference();
+    placeCursor();
+}
+
+void MotionChart::setTimeSpan(double tEnd)
+{
+    if (!(std::isfinite(tEnd) && tEnd > 0.0))
+        return;
+    tEnd_ = tEnd;
+    applyTimeRange();
+    sampleReference();
+}
+
+void MotionChart::applyTimeRange()
+{
+    // About one labelled tick per 80 pixels of plot width (5 before the first layout).
+    const double width = plotArea().width();
+    const int ticks = width > 0.0 ? std::clamp(int(width / 80.0), 3, 10) : 5;
+    setNiceRange(timeAxis_, 0.0, tEnd_, ticks);
+}
+
+const std::vector<double>& MotionChart::column(const MotionTrack& track, int axis) const
+{
+    switch (kind_) {
+    case ChartKind::Position:
+        return track.p(axis);
+    case ChartKind::Velocity:
+        return track.v(axis);
+    case ChartKind::Energy:
+        return track.energy();
+    }
+    throw std::logic_error("chart kind without data");
+}
+
+void MotionChart::showTrack(const MotionTrack& track, int columns)
+{
+    if (!track.empty() && std::isfinite(track.t().back()) && track.t().back() > tEnd_)
+        setTimeSpan(track.t().back());
+    else
+        applyTimeRange(); // the plot may have been resized since
+    for (int a : shownAxes_) {
+        const QList<QPointF> points = downsampleMinMax(track.t(), column(track, a), columns);
+        if (!points.isEmpty()) {
+            const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                                      [](const QPointF& l, const QPointF& r) { return l.y() < r.y(); });
+            updateValueRange(lo->y(), hi->y());
+        }
+        lines_[a]->replace(points); // replace(), not append(): append is quadratic in Qt Charts 6.4
+    }
+    placeCursor();
+}
+
+void MotionChart::updateValueRange(double lo, double hi)
+{
+    // The range only grows during a run, so the axis does not jitter as points arrive.
+    lo_ = haveRange_ ? std::min(lo_, lo) : lo;
+    hi_ = haveRange_ ? std::max(hi_, hi) : hi;
+    haveRange_ = true;
+    // A little room above and below, never across zero (a height stays above the floor).
+    const double pad = hi_ > lo_ ? 0.01 * (hi_ - lo_) : std::max(1.0, std::abs(hi_) * 0.1);
+    const double lower = lo_ >= 0.0 ? std::max(0.0, lo_ - pad) : lo_ - pad;
+    const double upper = hi_ <= 0.0 ? std::min(0.0, hi_ + pad) : hi_ + pad;
+    // About one labelled tick per 40 pixels of plot height, so short charts stay legible.
+    const int ticks = std::clamp(int(plotArea().height() / 40.0), 4, 8);
+    setNiceRange(valueAxis_, lower, upper, ticks);
+}
+
+void MotionChart::setCursorTime(std::optional<double> t)
+{
+    if (t && !std::isfinite(*t))
+        t.reset();
+    if (t == cursorT_)
+        return;
+    cursorT_ = t;
+    placeCursor();
+}
+
+void MotionChart::placeCursor()
+{
+    if (!cursorT_) {
+        cursor_->clear();
+        return;
+    }
+    cursor_->replace(QList<QPointF>{{*cursorT_, valueAxis_->min()}, {*cursorT_, valueAxis_->max()}});
+}
+
+double MotionChart::component(const Kinematics& k, int axis) const
+{
+    return kind_ == ChartKind::Velocity ? k.v[axis] : k.p[axis];
+}
+
+void MotionChart::setReference(const ReferenceMotion* reference, int columns)
+{
+    if (reference && reference->at)
+        reference_ = *reference;
+    else
+        reference_.reset();
+    referenceColumns_ = std::max(columns, 2);
+    sampleReference();
+}
+
+void MotionChart::sampleReference()
+{
+    const bool drawn = reference_ && kind_ != ChartKind::Energy;
+    for (int a = 0; a < 3; ++a) {
+        const bool shown = drawn && std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
+        QList<QPointF> points;
+        for (int i = 0; shown && i <= 2 * referenceColumns_; ++i) {
+            const double t = tEnd_ * i / (2.0 * referenceColumns_);
+            const std::optional<Kinematics> k = reference_->at(t);
+            if (k && std::isfinite(component(*k, a))) {
+                points.append(QPointF(t, component(*k, a)));
+                updateValueRange(points.back().y(), points.back().y());
+            }
+        }
+        if (drawn)
+            references_[a]->setName(lines_[a]->name() + " (" + reference_->name + ")");
+        references_[a]->replace(points);
+        setMarkerVisible(this, references_[a], shown);
+    }
+    placeCursor();
+}
+
+} // namespace ab::ui

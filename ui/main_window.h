@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// The window: stage navigator, parameters and run options on the left, the 3D view in
+// the middle, the charts on the right, the transport bar on top and the readings in the
+// status bar. Each stage keeps its own constants and options while the window is open.
+// Anything the core refuses is shown and not applied; the previous run stays.
+#pragma once
+
+#include "charts/motion_chart.h"
+#include "panels/chart_panel.h"
+#include "panels/run_options_panel.h"
+#include "sim/run_controller.h"
+
+#include <QElapsedTimer>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <map>
+#include <optional>
+
+class QLabel;
+
+namespace ab::ui {
+
+class BallView;
+class ParameterPanel;
+class StageNavigator;
+class StatusReadout;
+class TransportBar;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Switches to a stage with its remembered constants and options.
+    void showScene(SceneId scene);
+    // Apply new constants or options to the current stage; false (and shown) when the
+    // core refuses them, and then nothing changes.
+    bool applyValues(const ParamValues& values);
+    bool applyOptions(const RunOptions& options);
+
+    // Exports; each throws InputError naming the path and the reason.
+    void exportChartTo(ChartKind kind, const QString& path);
+    void exportDataTo(const QString& path);
+    void exportViewTo(const QString& path);
+
+    RunController& controller() { return controller_; }
+    StageNavigator* navigator() const { return navigator_; }
+    ParameterPanel* parameters() const { return parameters_; }
+    RunOptionsPanel* runOptions() const { return runOptions_; }
+    TransportBar* transport() const { return transport_; }
+    ChartPanel* charts() const { return charts_; }
+    StatusReadout* readout() const { return readout_; }
+    BallView* view() const { return view_; } // nullptr without OpenGL (offscreen tests)
+    SceneId scene() const { return scene_; }
+
+    void setTurntable(bool on);
+
+private:
+    struct Setup {
+        RunSpec spec;
+        RunOptions options;
+    };
+
+    void buildLayout();
+    void buildMenus();
+    QWidget* buildLeftPanel();
+    QWidget* buildViewArea();
+    // Starts the run; on refusal shows the core's message and returns it.
+    std::optional<QString> startRun(const Setup& setup);
+    Setup& setupFor(SceneId scene);
+    void runReplaced();
+    void ballSelected(int ball);
+    void refresh();
+    void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
+    void exportInteractively(ChartKind kind, ExportFormat format);
+    void exportViewInteractively();
+    void showError(const QString& message);
+    void showKeys();
+    void showAbout();
+
+    RunController controller_;
+    std::map<SceneId, Setup> setups_;
+    SceneId scene_ = SceneId::Bounce1d;
+    StageNavigator* navigator_ = nullptr;
+    ParameterPanel* parameters_ = nullptr;
+    RunOptionsPanel* runOptions_ = nullptr;
+    TransportBar* transport_ = nullptr;
+    ChartPanel* charts_ = nullptr;
+    BallView* view_ = nullptr;
+    QLabel* placeholder_ = nullptr;
+    StatusReadout* readout_ = nullptr;
+    QElapsedTimer panelClock_;
+    QElapsedTimer fpsClock_;
+    int framesSinceFps_ = 0;
+    QTimer turntable_;
+    std::optional<SceneId> framedScene_;
+    QString lastDirectory_;
+};
+
+} // namespace ab::ui

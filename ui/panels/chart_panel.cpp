@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+#include "chart_panel.h"
+
+#include <QChartView>
+#include <QContextMenuEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QVBoxLayout>
+
+namespace ab::ui {
+
+namespace {
+
+std::size_t slot(ChartKind kind)
+{
+    return static_cast<std::size_t>(kind);
+}
+
+} // namespace
+
+ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName("chartPanel");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* row = new QHBoxLayout;
+    row->addWidget(new QLabel(tr("Charts of ball")));
+    ball_ = new QSpinBox;
+    ball_->setObjectName("ballSpin");
+    ball_->setToolTip(tr("The ball the charts and the trace follow (or click a ball in the 3D view)"));
+    row->addWidget(ball_);
+    ballCount_ = new QLabel;
+    row->addWidget(ballCount_);
+    row->addStretch(1);
+    auto* hint = new QLabel(tr("Right-click a chart to export it"));
+    hint->setStyleSheet("color: #666;");
+    row->addWidget(hint);
+    layout->addLayout(row);
+
+    auto* splitter = new QSplitter(Qt::Vertical);
+    for (ChartKind kind : allChartKinds()) {
+        auto* chart = new MotionChart(kind);
+        auto* view = new QChartView(chart);
+        view->setObjectName(QStringLiteral("chart-%1").arg(QString::fromLatin1(chartKey(kind).data())));
+        view->setRenderHint(QPainter::Antialiasing);
+        view->setMinimumHeight(150);
+        view->installEventFilter(this);
+        view->viewport()->installEventFilter(this);
+        charts_[slot(kind)] = chart;
+        views_[slot(kind)] = view;
+        splitter->addWidget(view);
+    }
+    chart(ChartKind::Energy)->legend()->hide(); // one line, named by the title
+    splitter->setSizes({300, 300, 200});
+    layout->addWidget(splitter, 1);
+
+    connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
+        if (!updating_)
+            emit ballRequested(v - 1);
+    });
+}
+
+void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double tEnd)
+{
+    updating_ = true;
+    ball_->setRange(1, std::max(balls, 1));
+    ball_->setValue(ball + 1);
+    ball_->setEnabled(balls > 1);
+    updating_ = false;
+    ballCount_->setText(tr("of %1").arg(balls));
+    for (MotionChart* c : charts_) {
+        c->configure(scene, ball);
+        c->setTimeSpan(tEnd);
+    }
+}
+
+void ChartPanel::showTrack(const MotionTrack& track)
+{
+    for (std::size_t i = 0; i < charts_.size(); ++i)
+        charts_[i]->showTrack(track, std::max(views_[i]->width(), 200));
+}
+
+void ChartPanel::setCursorTime(std::optional<double> t)
+{
+    for (MotionChart* c : charts_)
+        c->setCursorTime(t);
+}
+
+void ChartPanel::setReference(const ReferenceMotion* reference)
+{
+    for (MotionChart* c : charts_)
+        c->setReference(reference);
+}
+
+MotionChart* ChartPanel::chart(ChartKind kind) const
+{
+    return charts_[slot(kind)];
+}
+
+QChartView* ChartPanel::chartView(ChartKind kind) const
+{
+    return views_[slot(kind)];
+}
+
+bool ChartPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    for (ChartKind kind : allChartKinds()) {
+        QChartView* view = views_[slot(kind)];
+        if (!view || (watched != view && watched != view->viewport()))
+            continue;
+        if (event->type() == QEvent::Enter || event->type() == QEvent::MouseButtonPress)
+            current_ = kind;
+        if (event->type() == QEvent::ContextMenu) {
+            current_ = kind;
+            QMenu menu;
+            menu.addAction(tr("Export this chart as PNG..."), this,
+                           [this, kind] { emit exportRequested(kind, ExportFormat::Png); });
+            menu.addAction(tr("Export this chart as SVG..."), this,
+                           [this, kind] { emit exportRequested(kind, ExportFormat::Svg); });
+            menu.addSeparator();
+            menu.addAction(tr("Export the chart data as CSV..."), this,
+                           [this, kind] { emit exportRequested(kind, ExportFormat::Csv); });
+            menu.exec(static_cast<QContextMenuEvent*>(event)->globalPos());
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace ab::ui

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The live charts, stacked: position, velocity and energy against time for the selected
+// ball, a ball chooser, and a context menu on each chart to export it (PNG, SVG) or the
+// data behind all of them (CSV). The chart last clicked or hovered is the "current" one
+// that Ctrl+E exports.
+#pragma once
+
+#include "ui/charts/motion_chart.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QChartView;
+class QLabel;
+class QSpinBox;
+
+namespace ab::ui {
+
+enum class ExportFormat { Png, Svg, Csv };
+
+class ChartPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit ChartPanel(QWidget* parent = nullptr);
+
+    // A new run of `scene` with `balls` balls, following ball `ball`, planned to `tEnd`.
+    void configure(const SceneInfo& scene, int balls, int ball, double tEnd);
+    void showTrack(const MotionTrack& track);
+    void setCursorTime(std::optional<double> t);
+    // The seam for closed forms (core/reference/): drawn dashed; nullptr removes it.
+    void setReference(const ReferenceMotion* reference);
+
+    MotionChart* chart(ChartKind kind) const;
+    QChartView* chartView(ChartKind kind) const;
+    ChartKind currentChart() const { return current_; }
+
+signals:
+    void ballRequested(int ball);
+    void exportRequested(ab::ui::ChartKind kind, ab::ui::ExportFormat format);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    std::array<MotionChart*, 3> charts_{};
+    std::array<QChartView*, 3> views_{};
+    QSpinBox* ball_;
+    QLabel* ballCount_;
+    ChartKind current_ = ChartKind::Position;
+    bool updating_ = false;
+};
+
+} // namespace ab::ui

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+#include "transport_bar.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QStyle>
+
+#include <cmath>
+
+namespace ab::ui {
+
+namespace {
+
+constexpr int timeSteps = 2000; // slider positions over the recorded run
+
+} // namespace
+
+// The speed slider runs over -100..100: 10^(value/100), 0.1x to 10x.
+double TransportBar::speedFromSlider(int value)
+{
+    return std::pow(10.0, value / 100.0);
+}
+int TransportBar::sliderFromSpeed(double factor)
+{
+    return int(std::lround(100.0 * std::log10(factor)));
+}
+
+TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
+{
+    setObjectName("transportBar");
+    auto* row = new QHBoxLayout(this);
+    row->setContentsMargins(4, 2, 4, 2);
+    play_ = new QPushButton;
+    play_->setObjectName("playButton");
+    step_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("Step"));
+    step_->setObjectName("stepButton");
+    step_->setToolTip(tr("One step (Right arrow)"));
+    reset_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Reset"));
+    reset_->setObjectName("resetButton");
+    reset_->setToolTip(tr("Back to the start (R)"));
+    for (QPushButton* b : {play_, step_, reset_}) {
+        b->setFocusPolicy(Qt::NoFocus);
+        row->addWidget(b);
+    }
+    row->addSpacing(12);
+    row->addWidget(new QLabel(tr("Speed")));
+    speed_ = new QSlider(Qt::Horizontal);
+    speed_->setObjectName("speedSlider");
+    speed_->setRange(-100, 100);
+    speed_->setFixedWidth(130);
+    speed_->setFocusPolicy(Qt::NoFocus);
+    speed_->setToolTip(tr("Simulated time per real second: 0.1x to 10x real time"));
+    row->addWidget(speed_);
+    speedLabel_ = new QLabel;
+    speedLabel_->setMinimumWidth(44);
+    row->addWidget(speedLabel_);
+    row->addSpacing(12);
+    time_ = new QSlider(Qt::Horizontal);
+    time_->setObjectName("timeSlider");
+    time_->setRange(0, timeSteps);
+    time_->setFocusPolicy(Qt::NoFocus);
+    time_->setToolTip(tr("Drag to look back through the recorded run; the right end is live"));
+    row->addWidget(time_, 1);
+    timeLabel_ = new QLabel;
+    timeLabel_->setObjectName("timeLabel");
+    timeLabel_->setMinimumWidth(200);
+    row->addWidget(timeLabel_);
+
+    connect(play_, &QPushButton::clicked, this, &TransportBar::playToggled);
+    connect(step_, &QPushButton::clicked, this, &TransportBar::stepRequested);
+    connect(reset_, &QPushButton::clicked, this, &TransportBar::resetRequested);
+    connect(speed_, &QSlider::valueChanged, this, [this](int v) {
+        if (!updating_)
+            emit speedRequested(speedFromSlider(v));
+    });
+    connect(time_, &QSlider::valueChanged, this, &TransportBar::scrubbed);
+    setPlaying(false);
+    setSpeed(1.0);
+    setRecorded(0.0, 0.0, QString());
+}
+
+void TransportBar::setPlaying(bool playing)
+{
+    play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    play_->setText(playing ? tr("Pause") : tr("Play"));
+    play_->setToolTip(tr("Play or pause (Space)"));
+}
+
+void TransportBar::setSpeed(double factor)
+{
+    updating_ = true;
+    speed_->setValue(sliderFromSpeed(factor));
+    updating_ = false;
+    speedLabel_->setText(QStringLiteral("%1x").arg(factor, 0, 'g', 2));
+}
+
+void TransportBar::setRecorded(double start, double end, const QString& unit)
+{
+    start_ = start;
+    end_ = std::max(end, start);
+    unit_ = unit;
+    if (!viewTime_) {
+        updating_ = true;
+        time_->setValue(timeSteps);
+        updating_ = false;
+    } else if (*viewTime_ > end_) {
+        viewTime_ = end_;
+    }
+    time_->setEnabled(end_ > start_);
+    updateLabel();
+}
+
+void TransportBar::goLive()
+{
+    if (!viewTime_)
+        return;
+    viewTime_.reset();
+    updating_ = true;
+    time_->setValue(timeSteps);
+    updating_ = false;
+    updateLabel();
+    emit viewTimeChanged(viewTime_);
+}
+
+void TransportBar::scrubbed(int value)
+{
+    if (updating_)
+        return;
+    if (value >= timeSteps)
+        viewTime_.reset();
+    else
+        viewTime_ = start_ + (end_ - start_) * value / timeSteps;
+    updateLabel();
+    emit viewTimeChanged(viewTime_);
+}
+
+void TransportBar::updateLabel()
+{
+    const auto fmt = [](double t) { return QString::number(t, 'f', t < 100 ? 2 : 1); };
+    if (viewTime_)
+        timeLabel_->setText(tr("t = %1 of %2 %3 (looking back)").arg(fmt(*viewTime_), fmt(end_), unit_));
+    else
+        timeLabel_->setText(tr("t = %1 %2 (live)").arg(fmt(end_), unit_));
+}
+
+} // namespace ab::ui

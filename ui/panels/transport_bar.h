@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Play/pause, one step, reset, the speed (0.1x to 10x real time, logarithmic) and a
+// time slider over the recorded run: dragging it shows an earlier moment (the 3D view
+// and the charts' cursor follow); at its right end the view is live again.
+#pragma once
+
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+class QPushButton;
+class QSlider;
+
+namespace ab::ui {
+
+class TransportBar : public QWidget {
+    Q_OBJECT
+public:
+    explicit TransportBar(QWidget* parent = nullptr);
+
+    void setPlaying(bool playing);
+    void setSpeed(double factor);
+    // The recorded run spans [start, end]; `unit` is the scene's time unit.
+    void setRecorded(double start, double end, const QString& unit);
+    // The moment shown: nothing when live.
+    std::optional<double> viewTime() const { return viewTime_; }
+    void goLive();
+
+    QPushButton* playButton() const { return play_; }
+    QPushButton* stepButton() const { return step_; }
+    QPushButton* resetButton() const { return reset_; }
+    QSlider* speedSlider() const { return speed_; }
+    QSlider* timeSlider() const { return time_; }
+
+    static double speedFromSlider(int value);
+    static int sliderFromSpeed(double factor);
+
+signals:
+    void playToggled();
+    void stepRequested();
+    void resetRequested();
+    void speedRequested(double factor);
+    // The user moved the time slider: a moment to show, or nothing for live.
+    void viewTimeChanged(std::optional<double> t);
+
+private:
+    void scrubbed(int value);
+    void updateLabel();
+
+    QPushButton* play_;
+    QPushButton* step_;
+    QPushButton* reset_;
+    QSlider* speed_;
+    QLabel* speedLabel_;
+    QSlider* time_;
+    QLabel* timeLabel_;
+    double start_ = 0.0, end_ = 0.0;
+    QString unit_;
+    std::optional<double> viewTime_;
+    bool updating_ = false;
+};
+
+} // namespace ab::ui

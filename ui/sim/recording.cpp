@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "recording.h"
+
+#include <algorithm>
+
+namespace ab::ui {
+
+Frame makeFrame(long long step, const State& s, double energy)
+{
+    Frame f;
+    f.step = step;
+    f.t = s.t;
+    f.energy = energy;
+    const auto n = static_cast<std::size_t>(s.size());
+    f.p.resize(3 * n);
+    f.v.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            f.p[3 * i + a] = static_cast<float>(s.p(a, static_cast<Eigen::Index>(i)));
+            f.v[3 * i + a] = static_cast<float>(s.v(a, static_cast<Eigen::Index>(i)));
+        }
+    }
+    return f;
+}
+
+Recording::Recording(const SceneLayout& layout, int trackedBall, std::size_t frameBudgetBytes,
+                     std::size_t trackCapacity)
+    : layout_(layout), trackedBall_(trackedBall), track_(trackCapacity)
+{
+    // A frame holds 6 floats per ball.
+    const std::size_t frameBytes = 6 * sizeof(float) * static_cast<std::size_t>(std::max(layout.balls, 1));
+    maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 2); // two at least; the start is always kept
+}
+
+void Recording::add(long long step, const State& s)
+{
+    const Eigen::Index b = trackedBall_;
+    const double energy = energyPerMass(s, layout_);
+    track_.add(step, s.t, s.p.col(b), s.v.col(b), energy);
+    if (step % frameStride_ != 0)
+        return;
+    frames_.push_back(makeFrame(step, s, energy));
+    while (frames_.size() > maxFrames_)
+        thinFrames();
+}
+
+void Recording::thinFrames()
+{
+    frameStride_ *= 2;
+    const auto off = [this](const Frame& f) { return f.step % frameStride_ != 0; };
+    frames_.erase(std::remove_if(frames_.begin(), frames_.end(), off), frames_.end());
+}
+
+void Recording::setTrackedBall(int ball)
+{
+    if (ball == trackedBall_)
+        return;
+    trackedBall_ = ball;
+    track_.clear();
+    for (const Frame& f : frames_) {
+        const auto i = static_cast<std::size_t>(3 * ball);
+        const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);
+        const Eigen::Vector3d v(f.v[i], f.v[i + 1], f.v[i + 2]);
+        track_.add(f.step, f.t, p, v, f.energy);
+    }
+}
+
+const Frame* Recording::frameAt(double t) const
+{
+    const auto it =
+        std::upper_bound(frames_.begin(), frames_.end(), t, [](double x, const Frame& f) { return x < f.t; });
+    return it == frames_.begin() ? nullptr : &*std::prev(it);
+}
+
+} // namespace ab::ui

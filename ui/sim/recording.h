@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// What the window keeps of a run, to draw the charts and to scrub back through it: the
+// tracked ball's motion and the energy at every step (MotionTrack, thinned past its
+// capacity), and frames of every ball at a stride that doubles whenever the frames
+// would pass a byte budget. Memory stays bounded for any run length and ball count;
+// with few balls every step is a frame.
+#pragma once
+
+#include "ui/charts/motion_track.h"
+#include "ui/charts/scene_layout.h"
+
+#include "core/state.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace ab::ui {
+
+// Every ball at one recorded step, as floats (x, y, z interleaved per ball, ready to draw).
+struct Frame {
+    long long step = 0;
+    double t = 0.0;
+    std::vector<float> p;
+    std::vector<float> v;
+    double energy = 0.0; // of all balls, per unit mass
+
+    int balls() const { return static_cast<int>(p.size() / 3); }
+};
+
+Frame makeFrame(long long step, const State& s, double energy);
+
+class Recording {
+public:
+    static constexpr std::size_t defaultFrameBudget = std::size_t(192) << 20;
+
+    Recording(const SceneLayout& layout, int trackedBall, std::size_t frameBudgetBytes = defaultFrameBudget,
+              std::size_t trackCapacity = std::size_t(1) << 20);
+
+    // Adds final state `s` of step `step`; steps come in increasing order.
+    void add(long long step, const State& s);
+
+    // Follows another ball: its track is rebuilt from the frames (coarser where the
+    // frames are), and continues at every step from here on.
+    void setTrackedBall(int ball);
+    int trackedBall() const { return trackedBall_; }
+
+    const MotionTrack& track() const { return track_; }
+    const std::vector<Frame>& frames() const { return frames_; }
+    long long frameStride() const { return frameStride_; }
+    std::size_t maxFrames() const { return maxFrames_; }
+    // The last frame at or before time t; nullptr before the first frame.
+    const Frame* frameAt(double t) const;
+    bool empty() const { return frames_.empty() && track_.empty(); }
+    double lastTime() const { return track_.empty() ? 0.0 : track_.t().back(); }
+
+private:
+    void thinFrames();
+
+    SceneLayout layout_;
+    int trackedBall_;
+    std::size_t maxFrames_;
+    long long frameStride_ = 1;
+    std::vector<Frame> frames_;
+    MotionTrack track_;
+};
+
+} // namespace ab::ui

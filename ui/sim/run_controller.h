@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The window's handle on a run: builds it from a RunSpec (keeping the previous one when
+// the spec is refused), plays it at a speed relative to real time, steps, resets, follows
+// the selected ball, and polls the worker each frame, signalling only when something
+// changed. 1x speed is real time in the scene's own units (see realTimeRate()).
+#pragma once
+
+#include "run_engine.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <future>
+#include <memory>
+#include <vector>
+
+namespace ab::ui {
+
+class RunController : public QObject {
+    Q_OBJECT
+public:
+    explicit RunController(QObject* parent = nullptr);
+    ~RunController() override;
+
+    // Validates and builds the run; throws InputError (and keeps the current run) when
+    // the core refuses the spec. The new run starts paused at its start state.
+    void setRun(const RunSpec& spec, long long steps);
+    bool hasRun() const { return engine_ != nullptr; }
+    const RunSpec& spec() const;
+    const SceneLayout& layout() const { return layout_; }
+    long long plannedSteps() const { return steps_; }
+    double plannedEnd() const;
+    const RunEngine& engine() const { return *engine_; }
+    EngineStatus status() const { return status_; }
+
+    bool playing() const { return status_.playing; }
+    double speed() const { return speed_; }
+    int selectedBall() const { return selected_; }
+
+    // Simulated time per real second at 1x: stages 2-3 count seconds; stage 1 counts
+    // steps of 0.1 s (report 2.2.1: g = 9.82 read with the step as 0.1 s); stage 4 counts
+    // frames of a 60 Hz display, as the report's WebGL program ran.
+    static double realTimeRate(const SceneInfo& scene);
+
+public slots:
+    void play();
+    void pause();
+    void togglePlay();
+    void stepOnce();
+    void reset();
+    void setSpeed(double factor);
+    void selectBall(int ball);
+    // Polls the worker now (the frame timer does it every 16 ms).
+    void poll();
+
+signals:
+    void runReplaced(); // a new run or a reset: the view and charts start over
+    void advanced();    // the run's snapshot changed
+    void playingChanged(bool playing);
+    void selectionChanged(int ball);
+    void speedChanged(double factor);
+
+private:
+    void startEngine(std::unique_ptr<Simulation> sim);
+    // Ends the current engine off the GUI thread: its worker may be inside a long step.
+    void retireEngine();
+
+    std::unique_ptr<RunSpec> spec_;
+    long long steps_ = 0;
+    SceneLayout layout_;
+    std::unique_ptr<RunEngine> engine_;
+    std::vector<std::future<void>> retiring_; // joined at the latest in the destructor
+    EngineStatus status_;
+    double speed_ = 1.0;
+    int selected_ = 0;
+    QTimer frameTimer_;
+};
+
+} // namespace ab::ui

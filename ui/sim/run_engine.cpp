@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+#include "run_engine.h"
+
+#include "core/params.h"
+
+#include <cmath>
+
+#ifdef __linux__
+#include <pthread.h>
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
+namespace ab::ui {
+
+namespace {
+
+bool finiteState(const State& s)
+{
+    return std::isfinite(s.t) && s.p.allFinite() && s.v.allFinite();
+}
+
+// The window's drawing comes first: on a busy machine a long step (10,000 balls) must
+// not take the core the window and software OpenGL need. Linux threads have their own
+// nice value; elsewhere the thread keeps the default priority.
+void lowerThisThreadsPriority()
+{
+#ifdef __linux__
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
+    pthread_setname_np(pthread_self(), "ab-stepper"); // named for profilers and --measure-frames
+#endif
+}
+
+} // namespace
+
+RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget)
+    : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())),
+      recording_(layout_, trackedBall, frameBudget), state_(sim_->start())
+{
+    current_ = makeFrame(0, state_, energyPerMass(state_, layout_));
+    status_.t = state_.t;
+    status_.energy = current_.energy;
+    status_.finished = maxSteps_ <= 0;
+    if (!finiteState(state_))
+        finish("the start state holds a non-finite number");
+    worker_ = std::thread([this] { loop(); });
+}
+
+RunEngine::~RunEngine()
+{
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+    }
+    wake_.notify_all();
+    worker_.join();
+}
+
+void RunEngine::play(double rate)
+{
+    {
+        std::lock_guard lock(mutex_);
+        if (!(std::isfinite(rate) && rate > 0.0))
+            throw std::logic_error("play: the rate must be positive");
+        rate_ = rate;
+        anchorTime_ = Clock::now();
+        anchorStep_ = status_.steps;
+        if (!status_.finished)
+            status_.playing = true;
+        ++status_.version;
+    }
+    wake_.notify_all();
+}
+
+void RunEngine::pause()
+{
+    std::lock_guard lock(mutex_);
+    if (status_.playing) {
+        status_.playing = false;
+        ++status_.version;
+    }
+}
+
+void RunEngine::stepOnce()
+{
+    {
+        std::lock_guard lock(mutex_);
+        status_.playing = false;
+        if (!status_.finished)
+            ++pendingSteps_;
+        ++status_.version;
+    }
+    wake_.notify_all();
+}
+
+void RunEngine::setTrackedBall(int ball)
+{
+    std::lock_guard lock(mutex_);
+    if (ball < 0 || ball >= current_.balls())
+        throw std::logic_error("setTrackedBall: no such ball");
+    recording_.setTrackedBall(ball);
+    ++status_.version;
+}
+
+EngineStatus RunEngine::status() const
+{
+    std::lock_guard lock(mutex_);
+    return status_;
+}
+
+void RunEngine::read(const std::function<void(const Recording&, const Frame&)>& f) const
+{
+    std::lock_guard lock(mutex_);
+    f(recording_, current_);
+}
+
+bool RunEngine::mayStep() const
+{
+    return !status_.finished && (status_.playing || pendingSteps_ > 0);
+}
+
+void RunEngine::loop()
+{
+    lowerThisThreadsPriority();
+    std::unique_lock lock(mutex_);
+    while (!quit_) {
+        if (!mayStep()) {
+            wake_.wait(lock);
+            continue;
+        }
+        if (pendingSteps_ > 0)
+            --pendingSteps_;
+        else if (!waitForDueStep(lock))
+            continue;
+        takeStep(lock);
+    }
+}
+
+bool RunEngine::waitForDueStep(std::unique_lock<std::mutex>& lock)
+{
+    const double dt = sim_->dt();
+    const auto now = Clock::now();
+    const double elapsed = std::chrono::duration<double>(now - anchorTime_).count();
+    const double due = static_cast<double>(anchorStep_) + std::floor(elapsed * rate_ / dt) - status_.steps;
+    if (due >= 1.0) {
+        // More than a quarter second behind: the steps cannot keep up, so stop owing them.
+        if (due * dt / rate_ > 0.25) {
+            anchorTime_ = now;
+            anchorStep_ = status_.steps;
+        }
+        return true;
+    }
+    const auto next = anchorTime_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                        static_cast<double>(status_.steps + 1 - anchorStep_) * dt / rate_));
+    const unsigned long long version = status_.version;
+    wake_.wait_until(lock, next, [&] { return quit_ || status_.version != version; });
+    return false; // re-check commands and the clock
+}
+
+void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
+{
+    lock.unlock();
+    const auto begin = Clock::now();
+    std::string failure;
+    try {
+        sim_->step(state_, next_); // may correct state_: it is final only now
+        if (!finiteState(next_))
+            failure = "the step from t = " + formatNumber(state_.t) +
+                      " produced a non-finite number; try a smaller step or another integrator";
+    } catch (const std::exception& e) {
+        failure = "the step from t = " + formatNumber(state_.t) + " failed: " + e.what();
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    lock.lock();
+
+    const bool finalOk = finiteState(state_);
+    if (finalOk)
+        recording_.add(status_.steps, state_);
+    if (!failure.empty() || !finalOk) {
+        finish(failure.empty() ? "the state became non-finite" : failure);
+        return;
+    }
+    if (state_.halted && status_.notice.empty())
+        status_.notice = "the report's bounce limit stopped the motion at t = " + formatNumber(state_.t);
+    std::swap(state_, next_);
+    ++status_.steps;
+    status_.stepSeconds = status_.stepSeconds == 0.0 ? seconds : 0.9 * status_.stepSeconds + 0.1 * seconds;
+    current_ = makeFrame(status_.steps, state_, energyPerMass(state_, layout_));
+    status_.t = state_.t;
+    status_.energy = current_.energy;
+    ++status_.version;
+    if (status_.steps >= maxSteps_) {
+        recording_.add(status_.steps, state_); // the last state, as runRecorded records it
+        finish({});
+    }
+}
+
+void RunEngine::finish(std::string warning)
+{
+    status_.finished = true;
+    status_.playing = false;
+    pendingSteps_ = 0;
+    if (!warning.empty())
+        status_.warning = std::move(warning);
+    ++status_.version;
+}
+
+} // namespace ab::ui

@@ -1,0 +1,425 @@
+// SPDX-License-Identifier: MIT
+#include "ball_view.h"
+
+#include "core/random.h"
+
+#include <QGuiApplication>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QPainter>
+#include <QPainterPath>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ab::ui {
+
+namespace {
+
+QSurfaceFormat viewFormat()
+{
+    QSurfaceFormat f;
+    f.setVersion(3, 3);
+    f.setProfile(QSurfaceFormat::CoreProfile);
+    f.setDepthBufferSize(24);
+    return f;
+}
+
+void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align)
+{
+    const QFontMetricsF fm(p.font());
+    const QRectF box = fm.boundingRect(text);
+    QPointF origin = at;
+    if (align & Qt::AlignRight)
+        origin.rx() -= box.width();
+    else if (align & Qt::AlignHCenter)
+        origin.rx() -= box.width() / 2.0;
+    origin.ry() += fm.ascent() / 2.0 - 1.0; // vertically centred on `at`
+    QPainterPath path;
+    path.addText(origin, p.font(), text);
+    p.setPen(QPen(QColor(255, 255, 255, 220), 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+    p.fillPath(path, colour);
+}
+
+} // namespace
+
+std::vector<unsigned> ballColours(const RunSpec& spec, int balls)
+{
+    std::vector<unsigned> colours(static_cast<std::size_t>(std::max(balls, 0)));
+    static constexpr unsigned fixed[] = {0xe4572e, 0x2e86de};
+    if (balls <= 2) {
+        for (int i = 0; i < balls; ++i)
+            colours[static_cast<std::size_t>(i)] = fixed[i];
+        return colours;
+    }
+    const long long seed = spec.params.indexOf("seed") ? spec.params.integer("seed") : 0;
+    SplitMix64 rng(static_cast<std::uint64_t>(seed) ^ 0xC0105EEDull);
+    for (unsigned& c : colours) {
+        const QColor q = QColor::fromHsvF(float(rng.uniform()), float(0.55 + 0.4 * rng.uniform()),
+                                          float(0.75 + 0.25 * rng.uniform()));
+        c = q.rgb() & 0xffffffu;
+    }
+    return colours;
+}
+
+BallView::BallView()
+{
+    setFormat(viewFormat());
+    container_ = QWidget::createWindowContainer(this);
+    container_->setObjectName("ballView");
+    container_->setFocusPolicy(Qt::ClickFocus);
+    container_->setMinimumSize(320, 240);
+    container_->setAccessibleName(tr("3D view"));
+    sincePaint_.start();
+}
+
+BallView::~BallView()
+{
+    releaseGl();
+}
+
+bool BallView::available()
+{
+    const QString platform = QGuiApplication::platformName();
+    return platform != QLatin1String("offscreen") && platform != QLatin1String("minimal");
+}
+
+void BallView::initializeGL()
+{
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &BallView::releaseGl, Qt::UniqueConnection);
+    if (!renderer_.initialize(glError_))
+        qWarning("3D view: %s", qPrintable(glError_));
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = true;
+}
+
+void BallView::releaseGl()
+{
+    if (!renderer_.ready() || !context())
+        return;
+    makeCurrent();
+    renderer_.release();
+    doneCurrent();
+}
+
+void BallView::resizeGL(int, int)
+{
+    if (!cameraMoved_)
+        framePending_ = true; // keep the whole scene in view until the user moves the camera
+}
+
+void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours,
+                        bool reframe)
+{
+    const bool regionChanged = !layout_.region.isApprox(layout.region) || layout_.walls != layout.walls;
+    layout_ = layout;
+    geometry_ = buildSceneGeometry(layout, lengthUnit);
+    colours_ = std::move(colours);
+    balls_.clear();
+    trace_.clear();
+    selected_ = std::min(selected_, std::max(layout.balls - 1, 0));
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = true;
+    if (reframe || regionChanged)
+        resetView();
+    update();
+}
+
+void BallView::resetView()
+{
+    // Framed at the next paint, when the window's size (the aspect) is known.
+    framePending_ = true;
+    cameraMoved_ = false;
+    update();
+}
+
+void BallView::frameScene()
+{
+    const float aspect = float(width()) / float(std::max(height(), 1));
+    // The report's WebGL camera stands at (100, 50, 50) from the centre: yaw about 63
+    // degrees, pitch about 24. The vertical scene is seen from the side.
+    if (layout_.walls)
+        camera_.frame(geometry_.lo, geometry_.hi, 63.0f, 24.0f, aspect);
+    else
+        camera_.frame(geometry_.lo, geometry_.hi, 0.0f, 8.0f, aspect);
+    framePending_ = false;
+}
+
+void BallView::turn(float yawDegrees)
+{
+    camera_.turn(yawDegrees);
+    cameraMoved_ = true;
+    update();
+}
+
+void BallView::setBalls(const std::vector<float>& xyz)
+{
+    if (!std::all_of(xyz.begin(), xyz.end(), [](float x) { return std::isfinite(x); }))
+        return; // never draw a NaN: keep the last good frame
+    if (xyz == balls_)
+        return;
+    balls_ = xyz;
+    ballsDirty_ = true;
+    update();
+}
+
+void BallView::setSelected(int ball)
+{
+    if (ball == selected_)
+        return;
+    selected_ = ball;
+    update();
+}
+
+void BallView::setTrace(std::vector<QVector3D> points)
+{
+    if (points == trace_)
+        return;
+    trace_ = std::move(points);
+    traceDirty_ = true;
+    update();
+}
+
+void BallView::uploadPending()
+{
+    if (!renderer_.ready())
+        return;
+    if (geometryDirty_)
+        renderer_.setGeometry(geometry_);
+    if (coloursDirty_)
+        renderer_.setColours(colours_);
+    if (ballsDirty_)
+        renderer_.setBalls(balls_);
+    if (traceDirty_ || coloursDirty_) {
+        const bool has = selected_ >= 0 && std::size_t(selected_) < colours_.size();
+        const QColor c = has ? QColor::fromRgb(colours_[std::size_t(selected_)]).darker(150) : QColor(Qt::darkGray);
+        renderer_.setTrace(trace_, c);
+    }
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = false;
+}
+
+RenderInputs BallView::renderInputs() const
+{
+    RenderInputs in;
+    const float aspect = float(width()) / float(std::max(height(), 1));
+    in.view = camera_.view();
+    in.projection = camera_.projection(aspect);
+    in.pixelsPerUnit = camera_.pixelsPerUnit(height());
+    in.radius = float(layout_.ballRadius);
+    in.minPixels = layout_.balls > 100 ? 2.0f : 5.0f;
+    in.selected = layout_.balls > 1 ? selected_ : -1; // one ball needs no marking
+    in.floorY = float(layout_.floorY);
+    in.fadeHeight = float(std::max(6.0 * layout_.ballRadius, 0.08 * layout_.region.sizes().y()));
+    return in;
+}
+
+void BallView::paintGL()
+{
+    const double interval = double(sincePaint_.nsecsElapsed()) / 1e6;
+    sincePaint_.restart();
+    QElapsedTimer timer;
+    timer.start();
+    uploadPending();
+    if (framePending_ && width() > 0 && height() > 0)
+        frameScene();
+    QPainter painter(this);
+    painter.beginNativePainting();
+    RenderInputs in = renderInputs();
+    in.viewport = size() * devicePixelRatio();
+    renderer_.draw(in);
+    painter.endNativePainting();
+    paintOverlay(painter);
+    painter.end();
+    emit framePainted(double(timer.nsecsElapsed()) / 1e6, interval);
+}
+
+void BallView::paintOverlay(QPainter& p)
+{
+    p.setRenderHint(QPainter::Antialiasing);
+    QFont font = p.font();
+    font.setPointSizeF(10.0);
+    p.setFont(font);
+    QPointF at;
+    for (const SceneLabel& label : geometry_.labels)
+        if (camera_.project(label.at, size(), at))
+            drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
+    // The vertical scene reads its height off the scale: label the ball with it.
+    if (!layout_.walls && balls_.size() >= 3 && ballPixel(0, at))
+        drawHaloText(p, at + QPointF(14.0, 0.0), QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1),
+                     QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
+    if (!glError_.isEmpty())
+        drawHaloText(p, QPointF(12, 20), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
+    if (keyFocus_)
+        drawHaloText(p, QPointF(12, height() - 14),
+                     tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
+                     QColor(0x30, 0x30, 0x30), Qt::AlignLeft);
+}
+
+QVector3D BallView::ballAt(int i) const
+{
+    const auto k = static_cast<std::size_t>(3 * i);
+    return QVector3D(balls_[k], balls_[k + 1], balls_[k + 2]);
+}
+
+float BallView::drawnRadius(const QVector3D& centre) const
+{
+    // As ball.vert: never smaller than minPixels on screen.
+    const RenderInputs in = renderInputs();
+    const float depth = std::max(-(in.view.map(centre)).z(), 1e-6f);
+    return std::max(in.radius, in.minPixels * depth / in.pixelsPerUnit);
+}
+
+bool BallView::ballPixel(int ball, QPointF& pixel) const
+{
+    if (ball < 0 || std::size_t(3 * ball + 2) >= balls_.size())
+        return false;
+    return camera_.project(ballAt(ball), size(), pixel);
+}
+
+int BallView::pick(const QPointF& pixel) const
+{
+    QVector3D origin, dir;
+    camera_.ray(pixel, size(), origin, dir);
+    int best = -1;
+    float bestT = std::numeric_limits<float>::infinity();
+    const int n = int(balls_.size() / 3);
+    for (int i = 0; i < n; ++i) {
+        // Ray-sphere: the nearest t >= 0 with |origin + t dir - c| = r.
+        const QVector3D c = ballAt(i);
+        const float r = drawnRadius(c);
+        const QVector3D oc = c - origin;
+        const float b = QVector3D::dotProduct(oc, dir);
+        const float miss2 = oc.lengthSquared() - b * b;
+        if (miss2 > r * r || b < 0.0f)
+            continue;
+        const float t = b - std::sqrt(r * r - miss2);
+        if (t < bestT) {
+            bestT = t;
+            best = i;
+        }
+    }
+    return best;
+}
+
+bool BallView::event(QEvent* e)
+{
+    // With focus the arrow keys move the camera (the report's keys), so they must not
+    // reach the window's shortcuts (Right steps the run elsewhere).
+    if (e->type() == QEvent::ShortcutOverride) {
+        const int key = static_cast<QKeyEvent*>(e)->key();
+        if (key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down ||
+            key == Qt::Key_Escape) {
+            e->accept();
+            return true;
+        }
+    }
+    return QOpenGLWindow::event(e);
+}
+
+void BallView::keyPressEvent(QKeyEvent* e)
+{
+    // Appendix D: left/right move the camera by -/+2 in x, up/down by -/+2 in z (box 100).
+    const float step = geometry_.arrowStep;
+    switch (e->key()) {
+    case Qt::Key_Left:
+        camera_.moveEye({-step, 0, 0});
+        break;
+    case Qt::Key_Right:
+        camera_.moveEye({step, 0, 0});
+        break;
+    case Qt::Key_Up:
+        camera_.moveEye({0, 0, -step});
+        break;
+    case Qt::Key_Down:
+        camera_.moveEye({0, 0, step});
+        break;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        camera_.zoom(1.0f);
+        break;
+    case Qt::Key_Minus:
+        camera_.zoom(-1.0f);
+        break;
+    case Qt::Key_Escape:
+        emit keysReleased();
+        break;
+    default:
+        QOpenGLWindow::keyPressEvent(e);
+        return;
+    }
+    cameraMoved_ = true;
+    update();
+}
+
+void BallView::focusInEvent(QFocusEvent* e)
+{
+    QOpenGLWindow::focusInEvent(e);
+    keyFocus_ = true;
+    update();
+}
+
+void BallView::focusOutEvent(QFocusEvent* e)
+{
+    QOpenGLWindow::focusOutEvent(e);
+    keyFocus_ = false;
+    update();
+}
+
+void BallView::exposeEvent(QExposeEvent* e)
+{
+    QOpenGLWindow::exposeEvent(e);
+    update();
+}
+
+void BallView::mousePressEvent(QMouseEvent* e)
+{
+    pressPos_ = lastPos_ = e->position().toPoint();
+    dragButton_ = e->button();
+    if (dragButton_ == Qt::LeftButton && (e->modifiers() & Qt::ShiftModifier))
+        dragButton_ = Qt::MiddleButton;
+}
+
+void BallView::mouseMoveEvent(QMouseEvent* e)
+{
+    const QPoint pos = e->position().toPoint();
+    const QPoint d = pos - lastPos_;
+    lastPos_ = pos;
+    if (dragButton_ == Qt::LeftButton)
+        camera_.orbit(float(d.x()), float(d.y()));
+    else if (dragButton_ == Qt::RightButton || dragButton_ == Qt::MiddleButton)
+        camera_.pan(float(d.x()), float(d.y()), size());
+    else
+        return;
+    cameraMoved_ = true;
+    update();
+}
+
+void BallView::mouseReleaseEvent(QMouseEvent* e)
+{
+    const bool click = (e->position().toPoint() - pressPos_).manhattanLength() < 5;
+    if (click && e->button() == Qt::LeftButton) {
+        const int ball = pick(e->position());
+        if (ball >= 0)
+            emit ballPicked(ball);
+    }
+    dragButton_ = Qt::NoButton;
+}
+
+void BallView::mouseDoubleClickEvent(QMouseEvent* e)
+{
+    if (pick(e->position()) < 0)
+        resetView();
+}
+
+void BallView::wheelEvent(QWheelEvent* e)
+{
+    camera_.zoom(float(e->angleDelta().y()) / 120.0f);
+    cameraMoved_ = true;
+    update();
+}
+
+} // namespace ab::ui

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// The 3D view's camera: it orbits a target point (yaw about the vertical, pitch above
+// the floor), zooms by distance and pans the target. The arrow keys move the eye sideways
+// in world x and z as the report's WebGL program does (Appendix D), still looking at the
+// target. Also projects points to pixels and pixels to rays, for labels and picking.
+#pragma once
+
+#include <QMatrix4x4>
+#include <QPointF>
+#include <QSize>
+#include <QVector3D>
+
+#include <cmath>
+
+namespace ab::ui {
+
+class OrbitCamera {
+public:
+    // Looks at the centre of the box [lo, hi] from `yawDeg`, `pitchDeg`, far enough to see
+    // all of it in a view of aspect `aspect` (width / height).
+    void frame(const QVector3D& lo, const QVector3D& hi, float yawDeg, float pitchDeg, float aspect);
+
+    void orbit(float dxPixels, float dyPixels);
+    void turn(float yawDegrees) { yaw_ = std::fmod(yaw_ + yawDegrees, 360.0f); }
+    void pan(float dxPixels, float dyPixels, QSize viewport);
+    void zoom(float wheelSteps);
+    // Moves the eye by `delta` in world coordinates and keeps looking at the target.
+    void moveEye(const QVector3D& delta);
+
+    QVector3D eye() const;
+    QVector3D target() const { return target_; }
+    float distance() const { return distance_; }
+    float yaw() const { return yaw_; }
+    float pitch() const { return pitch_; }
+    float fovY() const { return fovY_; }
+    float sceneSize() const { return size_; }
+
+    QMatrix4x4 view() const;
+    QMatrix4x4 projection(float aspect) const;
+    // Pixels per world unit at unit distance in a viewport `height` pixels tall.
+    float pixelsPerUnit(int height) const;
+
+    // Window pixel (origin top-left) of world point `p`; false when behind the eye.
+    bool project(const QVector3D& p, QSize viewport, QPointF& pixel) const;
+    // The ray from the eye through window pixel `pixel`: origin and unit direction.
+    void ray(const QPointF& pixel, QSize viewport, QVector3D& origin, QVector3D& direction) const;
+
+private:
+    void setEye(const QVector3D& eye);
+
+    QVector3D target_{0, 0, 0};
+    float yaw_ = 60.0f;   // degrees, about +y, 0 looks along -z
+    float pitch_ = 20.0f; // degrees above the horizontal
+    float distance_ = 10.0f;
+    float fovY_ = 40.0f;
+    float size_ = 1.0f; // the framed box's diagonal, for near/far and step sizes
+};
+
+} // namespace ab::ui

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: MIT
+#include "scene_renderer.h"
+
+#include <QVector2D>
+
+#include <cstddef>
+
+namespace ab::ui {
+
+namespace {
+
+constexpr float quadCorners[8] = {-1, -1, 1, -1, -1, 1, 1, 1}; // a triangle strip
+
+std::unique_ptr<QOpenGLShaderProgram> program(const char* name, QString& error)
+{
+    auto p = std::make_unique<QOpenGLShaderProgram>();
+    const QString base = QStringLiteral(":/shaders/%1").arg(QString::fromLatin1(name));
+    if (!p->addShaderFromSourceFile(QOpenGLShader::Vertex, base + ".vert") ||
+        !p->addShaderFromSourceFile(QOpenGLShader::Fragment, base + ".frag") || !p->link()) {
+        error = QStringLiteral("shader %1: %2").arg(QString::fromLatin1(name), p->log().trimmed());
+        return nullptr;
+    }
+    return p;
+}
+
+} // namespace
+
+SceneRenderer::SceneRenderer()
+    : corners_(QOpenGLBuffer::VertexBuffer), positions_(QOpenGLBuffer::VertexBuffer),
+      colours_(QOpenGLBuffer::VertexBuffer), flat_(QOpenGLBuffer::VertexBuffer), trace_(QOpenGLBuffer::VertexBuffer)
+{
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+bool SceneRenderer::initialize(QString& error)
+{
+    initializeOpenGLFunctions();
+    if (!buildPrograms(error))
+        return false;
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &colours_, &flat_, &trace_}) {
+        b->create();
+        b->setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    }
+    corners_.bind();
+    corners_.allocate(quadCorners, sizeof quadCorners);
+    positions_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &shadowVao_, &flatVao_, &traceVao_})
+        vao->create();
+    setupInstanced(ballVao_, true);
+    setupInstanced(shadowVao_, false);
+    setupFlat(flatVao_, flat_);
+    setupFlat(traceVao_, trace_);
+    ready_ = true;
+    return true;
+}
+
+bool SceneRenderer::buildPrograms(QString& error)
+{
+    ballProgram_ = program("ball", error);
+    if (ballProgram_)
+        shadowProgram_ = program("shadow", error);
+    if (shadowProgram_)
+        flatProgram_ = program("flat", error);
+    return flatProgram_ != nullptr;
+}
+
+void SceneRenderer::setupInstanced(QOpenGLVertexArrayObject& vao, bool withColours)
+{
+    QOpenGLVertexArrayObject::Binder bind(&vao);
+    corners_.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    positions_.bind();
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glVertexAttribDivisor(1, 1); // one centre per ball
+    if (withColours) {
+        colours_.bind();
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, 0, nullptr);
+        glVertexAttribDivisor(2, 1);
+    }
+}
+
+void SceneRenderer::setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buffer)
+{
+    QOpenGLVertexArrayObject::Binder bind(&vao);
+    buffer.bind();
+    const auto stride = static_cast<GLsizei>(sizeof(FlatVertex));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, r)));
+}
+
+void SceneRenderer::release()
+{
+    ready_ = false;
+    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &shadowVao_, &flatVao_, &traceVao_})
+        vao->destroy();
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &colours_, &flat_, &trace_})
+        b->destroy();
+    ballProgram_.reset();
+    shadowProgram_.reset();
+    flatProgram_.reset();
+}
+
+void SceneRenderer::setGeometry(const SceneGeometry& g)
+{
+    std::vector<FlatVertex> all;
+    all.reserve(g.floor.size() + g.lines.size() + g.walls.size());
+    all.insert(all.end(), g.floor.begin(), g.floor.end());
+    all.insert(all.end(), g.lines.begin(), g.lines.end());
+    all.insert(all.end(), g.walls.begin(), g.walls.end());
+    floorVertices_ = static_cast<int>(g.floor.size());
+    lineVertices_ = static_cast<int>(g.lines.size());
+    wallVertices_ = static_cast<int>(g.walls.size());
+    flat_.bind();
+    flat_.allocate(all.data(), static_cast<int>(all.size() * sizeof(FlatVertex)));
+}
+
+void SceneRenderer::setColours(const std::vector<unsigned>& rgb)
+{
+    std::vector<unsigned char> rgba(4 * rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        rgba[4 * i] = static_cast<unsigned char>(rgb[i] >> 16);
+        rgba[4 * i + 1] = static_cast<unsigned char>(rgb[i] >> 8);
+        rgba[4 * i + 2] = static_cast<unsigned char>(rgb[i]);
+        rgba[4 * i + 3] = 255;
+    }
+    colours_.bind();
+    colours_.allocate(rgba.data(), static_cast<int>(rgba.size()));
+}
+
+void SceneRenderer::setBalls(const std::vector<float>& xyz)
+{
+    balls_ = static_cast<int>(xyz.size() / 3);
+    positions_.bind();
+    positions_.allocate(xyz.data(), static_cast<int>(xyz.size() * sizeof(float)));
+}
+
+void SceneRenderer::setTrace(const std::vector<QVector3D>& points, const QColor& colour)
+{
+    std::vector<FlatVertex> v;
+    v.reserve(points.size());
+    for (const QVector3D& p : points)
+        v.push_back({p.x(), p.y(), p.z(), float(colour.redF()), float(colour.greenF()), float(colour.blueF()), 1.0f});
+    traceVertices_ = static_cast<int>(v.size());
+    trace_.bind();
+    trace_.allocate(v.data(), static_cast<int>(v.size() * sizeof(FlatVertex)));
+}
+
+void SceneRenderer::setCommonUniforms(QOpenGLShaderProgram& p, const RenderInputs& in)
+{
+    p.bind();
+    p.setUniformValue("view", in.view);
+    p.setUniformValue("projection", in.projection);
+    p.setUniformValue("radius", in.radius);
+    p.setUniformValue("minPixels", in.minPixels);
+    p.setUniformValue("pixelsPerUnit", in.pixelsPerUnit);
+}
+
+void SceneRenderer::draw(const RenderInputs& in)
+{
+    glViewport(0, 0, in.viewport.width(), in.viewport.height());
+    glClearColor(0.925f, 0.94f, 0.96f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!ready_)
+        return;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    drawFlat(in); // floor and lines
+
+    if (balls_ > 0) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        setCommonUniforms(*shadowProgram_, in);
+        shadowProgram_->setUniformValue("floorY", in.floorY);
+        shadowProgram_->setUniformValue("fadeHeight", in.fadeHeight);
+        shadowVao_.bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+
+        setCommonUniforms(*ballProgram_, in);
+        ballProgram_->setUniformValue("selected", in.selected);
+        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
+        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
+        ballVao_.bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_); // every ball in one call
+    }
+
+    flatProgram_->bind();
+    flatProgram_->setUniformValue("viewProjection", in.projection * in.view);
+    if (traceVertices_ > 1) {
+        traceVao_.bind();
+        glDrawArrays(GL_LINE_STRIP, 0, traceVertices_);
+    }
+    if (wallVertices_ > 0) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        flatVao_.bind();
+        glDrawArrays(GL_TRIANGLES, floorVertices_ + lineVertices_, wallVertices_);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+    flatVao_.release();
+    flatProgram_->release();
+}
+
+void SceneRenderer::drawFlat(const RenderInputs& in)
+{
+    flatProgram_->bind();
+    flatProgram_->setUniformValue("viewProjection", in.projection * in.view);
+    flatVao_.bind();
+    // The floor sits a little behind its grid lines and the shadows, so they never flicker.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, floorVertices_);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDrawArrays(GL_LINES, floorVertices_, lineVertices_);
+}
+
+} // namespace ab::ui

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// The GL side of the 3D view (OpenGL 3.3 core): one instanced draw call ray-casts every
+// ball as a sphere impostor, one more lays the contact shadows on the floor, and a plain
+// coloured-vertex program draws the floor, box, scale and trace. Every call here needs
+// the view's context current; release() frees all GL objects before it goes away.
+#pragma once
+
+#include "scene_geometry.h"
+
+#include <QColor>
+#include <QMatrix4x4>
+#include <QOpenGLBuffer>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+#include <QSize>
+
+#include <memory>
+#include <vector>
+
+namespace ab::ui {
+
+struct RenderInputs {
+    QSize viewport; // device pixels
+    QMatrix4x4 view;
+    QMatrix4x4 projection;
+    float pixelsPerUnit = 1.0f; // at unit distance
+    float radius = 1.0f;        // ball radius, world units
+    float minPixels = 4.0f;     // smallest drawn ball radius on screen
+    int selected = -1;
+    float floorY = 0.0f;
+    float fadeHeight = 1.0f; // contact shadows fade out at this height
+};
+
+class SceneRenderer : protected QOpenGLExtraFunctions {
+public:
+    SceneRenderer();
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    // Compiles the shaders and creates the buffers; false (with `error`) when it fails.
+    bool initialize(QString& error);
+    void release();
+    bool ready() const { return ready_; }
+
+    void setGeometry(const SceneGeometry& geometry);
+    void setColours(const std::vector<unsigned>& rgb);
+    void setBalls(const std::vector<float>& xyz);
+    void setTrace(const std::vector<QVector3D>& points, const QColor& colour);
+    void draw(const RenderInputs& in);
+
+private:
+    bool buildPrograms(QString& error);
+    void setupInstanced(QOpenGLVertexArrayObject& vao, bool withColours);
+    void setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buffer);
+    void setCommonUniforms(QOpenGLShaderProgram& program, const RenderInputs& in);
+    void drawFlat(const RenderInputs& in);
+
+    bool ready_ = false;
+    std::unique_ptr<QOpenGLShaderProgram> ballProgram_, shadowProgram_, flatProgram_;
+    QOpenGLVertexArrayObject ballVao_, shadowVao_, flatVao_, traceVao_;
+    QOpenGLBuffer corners_, positions_, colours_, flat_, trace_;
+    int balls_ = 0, floorVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0, traceVertices_ = 0;
+};
+
+} // namespace ab::ui
