@@ -285,6 +285,7 @@ void MainWindow::runReplaced()
     const int ball = controller_.selectedBall();
     readout_->setUnits(qs(info.timeUnit), qs(info.lengthUnit));
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd());
+    showReference();
     if (view_) {
         view_->setScene(layout, qs(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
         framedScene_ = scene_;
@@ -299,10 +300,39 @@ void MainWindow::ballSelected(int ball)
 {
     const SceneLayout& layout = controller_.layout();
     charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd());
+    showReference();
     if (view_)
         view_->setSelected(ball);
     panelClock_.invalidate();
     refresh();
+}
+
+void MainWindow::showReference()
+{
+    // The textbook closed form of the same constants (core/reference/), also beside the
+    // report's model: the gap between the two is the report's scheme at work. A run that
+    // starts from a given state, or constants no closed form covers, get none.
+    const RunSpec& spec = controller_.spec();
+    reference_.reset();
+    if (!spec.init) {
+        try {
+            reference_ = reference::makeReference(spec, controller_.plannedEnd());
+        } catch (const InputError&) {
+        }
+    }
+    const int ball = controller_.selectedBall();
+    if (!reference_ || ball >= reference_->balls()) {
+        charts_->setReference(nullptr);
+        return;
+    }
+    const reference::Reference* ref = reference_.get();
+    const ReferenceMotion motion{tr("closed form"), [ref, ball](double t) -> std::optional<Kinematics> {
+                                     Kinematics k{ref->position(ball, t), ref->velocity(ball, t)};
+                                     if (!k.p.allFinite() || !k.v.allFinite())
+                                         return std::nullopt; // never drawn
+                                     return k;
+                                 }};
+    charts_->setReference(&motion);
 }
 
 void MainWindow::refresh()

@@ -10,11 +10,14 @@
 #include "panels/run_options_panel.h"
 #include "sim/run_controller.h"
 
+#include "core/reference/reference.h"
+
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QTimer>
 
 #include <map>
+#include <memory>
 #include <optional>
 
 class QLabel;
@@ -72,6 +75,8 @@ private:
     Setup& setupFor(SceneId scene);
     void runReplaced();
     void ballSelected(int ball);
+    // The scene's closed form, drawn dashed beside the run where the core has one.
+    void showReference();
     void refresh();
     void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
     void exportInteractively(ChartKind kind, ExportFormat format);
@@ -97,6 +102,7 @@ private:
     QTimer turntable_;
     std::optional<SceneId> framedScene_;
     QString lastDirectory_;
+    std::unique_ptr<reference::Reference> reference_;
 };
 
 } // namespace ab::ui
