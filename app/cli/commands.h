@@ -10,5 +10,6 @@ namespace ab::cli {
 
 int listCommand(Args& args, std::ostream& out, std::ostream& err);
 int runCommand(Args& args, std::ostream& out, std::ostream& err);
+int benchCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli
