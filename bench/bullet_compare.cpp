@@ -91,8 +91,8 @@ public:
             info.m_startWorldTransform.setOrigin(btVector3(start.p(0, i), start.p(1, i), start.p(2, i)));
             info.m_restitution = ballRestitution;
             info.m_friction = 0;
-            add(std::make_unique<btRigidBody>(info))->setLinearVelocity(
-                btVector3(start.v(0, i), start.v(1, i), start.v(2, i)));
+            add(std::make_unique<btRigidBody>(info))
+                ->setLinearVelocity(btVector3(start.v(0, i), start.v(1, i), start.v(2, i)));
         }
         // Walls at +-box/2: a plane n.x = d with n pointing into the box.
         for (int axis = 0; axis < 3; ++axis)
@@ -168,14 +168,16 @@ int main(int argc, char** argv)
         {
             ab::physical::ManyBallsEngine engine(ab::physical::ManyBallsSettings::fromSpec(spec, *spec.dt));
             engine.load(*spec.init);
-            const auto t = ab::cli::timeBallSteps(n, kWarmupSteps, o.steps, o.repeats, [&] { engine.step(); }, nothing);
+            const auto t = ab::cli::timeBallSteps(
+                n, kWarmupSteps, o.steps, o.repeats, [&] { engine.step(); }, nothing);
             ab::State end;
             engine.store(end);
             rows.push_back({n, "amazeballs", t, 0.5 * end.v.squaredNorm()});
         }
         {
             BulletWorld world(*spec.init, ab::physical::benchmarkBoxSide(n));
-            const auto t = ab::cli::timeBallSteps(n, kWarmupSteps, o.steps, o.repeats, [&] { world.step(); }, nothing);
+            const auto t = ab::cli::timeBallSteps(
+                n, kWarmupSteps, o.steps, o.repeats, [&] { world.step(); }, nothing);
             rows.push_back({n, "bullet", t, world.kineticEnergy()});
         }
         const Row& ours = rows[rows.size() - 2];
@@ -205,8 +207,7 @@ int main(int argc, char** argv)
             md << "| " << rows[i].balls << " | " << number(rows[i].timing.nsPerBallStep, "%.1f") << " | "
                << number(rows[i + 1].timing.nsPerBallStep, "%.0f") << " | "
                << number(rows[i + 1].timing.nsPerBallStep / rows[i].timing.nsPerBallStep, "%.0f") << "x | "
-               << number(rows[i].kineticEnergy, "%.4g") << " / " << number(rows[i + 1].kineticEnergy, "%.4g")
-               << " |\n";
+               << number(rows[i].kineticEnergy, "%.4g") << " / " << number(rows[i + 1].kineticEnergy, "%.4g") << " |\n";
         md << "\nOne thread each; " << kWarmupSteps << " warm-up steps, then the median of " << o.repeats
            << " blocks of " << o.steps << " timed steps; peak resident memory of the process " << number(rss, "%.0f")
            << " MiB.\n";

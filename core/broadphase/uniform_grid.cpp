@@ -94,28 +94,32 @@ void UniformGrid::reset(const GridGeometry& geometry, int balls, int parts, int 
     fx_.assign(n + 4, 0.0f);
     fy_.assign(n + 4, 0.0f);
     fz_.assign(n + 4, 0.0f);
-    partSlabCount_.assign(static_cast<std::size_t>(parts) * slabs, 0);
+    blockSlabCount_.assign(static_cast<std::size_t>(blockCount()) * slabs, 0);
     cellStart_.assign(geo_.cellCount() + 1, 0);
     cellStart_.back() = static_cast<std::uint32_t>(balls);
 }
 
-void UniformGrid::startAssign(int part)
+UniformGrid::Placer UniformGrid::placer(int part)
 {
     const int slabs = slabCount();
-    std::uint32_t* count = partSlabCount_.data() + static_cast<std::size_t>(part) * slabs;
-    std::fill(count, count + slabs, 0u);
+    Placer p;
+    p.geo_ = &geo_;
+    p.slabOfLayer_ = slabOfLayer_.data();
+    p.cell_ = cell_.data();
+    p.slab_ = slab_.data();
+    p.count_ = blockSlabCount_.data();
+    p.slabs_ = static_cast<std::size_t>(slabs);
+    // Parts are whole blocks (the last one may end early), so each clears its own rows.
+    const std::size_t first = static_cast<std::size_t>(partBegin(part)) >> kBlockShift;
+    const std::size_t end = (static_cast<std::size_t>(partBegin(part + 1)) + (1u << kBlockShift) - 1) >> kBlockShift;
+    std::fill(p.count_ + first * slabs, p.count_ + end * slabs, 0u);
+    return p;
 }
 
-void UniformGrid::assign(int part, int begin, int end, const double* x, const double* y, const double* z)
+bool UniformGrid::blockHolds(int block, int s0, int s1) const
 {
-    std::uint32_t* count = partSlabCount_.data() + static_cast<std::size_t>(part) * slabCount();
-    for (int i = begin; i < end; ++i) {
-        const int iz = geo_.coord(z[i]);
-        const std::uint8_t s = slabOfLayer_[static_cast<std::size_t>(iz)];
-        cell_[static_cast<std::size_t>(i)] = geo_.cell(geo_.coord(x[i]), geo_.coord(y[i]), iz);
-        slab_[static_cast<std::size_t>(i)] = s;
-        ++count[s];
-    }
+    const std::uint32_t* count = blockSlabCount_.data() + static_cast<std::size_t>(block) * slabCount();
+    return std::any_of(count + s0, count + s1, [](std::uint32_t c) { return c != 0; });
 }
 
 void UniformGrid::sortPart(int part, const double* x, const double* y, const double* z)
@@ -123,22 +127,26 @@ void UniformGrid::sortPart(int part, const double* x, const double* y, const dou
     const int s0 = slabShare(part), s1 = slabShare(part + 1);
     if (s0 == s1)
         return;
-    const int slabs = slabCount();
+    const int slabs = slabCount(), blocks = blockCount();
     // Where this part's balls start: every ball of a lower slab comes first.
     std::uint32_t base = 0;
-    for (int p = 0; p < parts_; ++p)
+    for (int b = 0; b < blocks; ++b)
         for (int s = 0; s < s0; ++s)
-            base += partSlabCount_[static_cast<std::size_t>(p) * slabs + s];
+            base += blockSlabCount_[static_cast<std::size_t>(b) * slabs + s];
     const std::size_t c0 = slabFirstCell(s0), c1 = slabFirstCell(s1);
     std::uint32_t* start = cellStart_.data();
     std::fill(start + c0, start + c1, 0u);
     const auto mine = [&](std::size_t i) {
         return static_cast<unsigned>(slab_[i] - s0) < static_cast<unsigned>(s1 - s0);
     };
-    const auto n = static_cast<std::size_t>(n_);
-    for (std::size_t i = 0; i < n; ++i)
-        if (mine(i))
-            ++start[cell_[i]];
+    const auto blockEnd = [&](int b) {
+        return std::min<std::size_t>(static_cast<std::size_t>(n_), (b + 1ull) << kBlockShift);
+    };
+    for (int b = 0; b < blocks; ++b)
+        if (blockHolds(b, s0, s1))
+            for (std::size_t i = static_cast<std::size_t>(b) << kBlockShift; i < blockEnd(b); ++i)
+                if (mine(i))
+                    ++start[cell_[i]];
     // Counts to end positions, then place from the last ball back: each cell keeps its
     // balls in index order and start[c] ends as the first position of cell c.
     std::uint32_t running = base;
@@ -149,24 +157,29 @@ void UniformGrid::sortPart(int part, const double* x, const double* y, const dou
     const double lo = geo_.lo(), side = geo_.side();
     // Clamped to the cube, which never brings two coordinates further apart.
     const auto copy = [&](double v) { return static_cast<float>(std::clamp(v - lo, 0.0, side)); };
-    for (std::size_t i = n; i > 0; --i) {
-        if (!mine(i - 1))
+    for (int b = blocks - 1; b >= 0; --b) {
+        if (!blockHolds(b, s0, s1))
             continue;
-        const std::uint32_t c = cell_[i - 1];
-        const std::uint32_t q = --start[c];
-        order_[q] = static_cast<std::uint32_t>(i - 1);
-        sortedCell_[q] = c;
-        fx_[q] = copy(x[i - 1]);
-        fy_[q] = copy(y[i - 1]);
-        fz_[q] = copy(z[i - 1]);
+        for (std::size_t i = blockEnd(b); i-- > static_cast<std::size_t>(b) << kBlockShift;) {
+            if (!mine(i))
+                continue;
+            const std::uint32_t c = cell_[i];
+            const std::uint32_t q = --start[c];
+            order_[q] = static_cast<std::uint32_t>(i);
+            sortedCell_[q] = c;
+            fx_[q] = copy(x[i]);
+            fy_[q] = copy(y[i]);
+            fz_[q] = copy(z[i]);
+        }
     }
 }
 
 void UniformGrid::build(const double* x, const double* y, const double* z)
 {
     for (int p = 0; p < parts_; ++p) {
-        startAssign(p);
-        assign(p, partBegin(p), partBegin(p + 1), x, y, z);
+        const Placer place = placer(p);
+        for (int i = partBegin(p); i < partBegin(p + 1); ++i)
+            place(i, x[i], y[i], z[i]);
     }
     for (int p = 0; p < parts_; ++p)
         sortPart(p, x, y, z);
@@ -232,7 +245,7 @@ void UniformGrid::findPairs(int s, const double* x, const double* y, const doubl
 std::size_t UniformGrid::bytes() const
 {
     return (cell_.capacity() + order_.capacity() + sortedCell_.capacity() + cellStart_.capacity() +
-            partSlabCount_.capacity()) *
+            blockSlabCount_.capacity()) *
                sizeof(std::uint32_t) +
            slab_.capacity() + (fx_.capacity() + fy_.capacity() + fz_.capacity()) * sizeof(float);
 }

@@ -41,9 +41,11 @@ namespace {
 constexpr ManyBallsEngine::Pass kPasses[] = {ManyBallsEngine::Pass::Contact, ManyBallsEngine::Pass::Support,
                                              ManyBallsEngine::Pass::Contact, ManyBallsEngine::Pass::Contact};
 constexpr double kTouching = 1.0 + 1e-6; // centres this close, relative to 2r, touch
-constexpr int kMaxSlabs = 128;           // slabs of the grid: threads share these out
-constexpr int kReorderEvery = 32;        // substeps between re-orderings by cell
-constexpr double kMaxTravel = 0.25;      // of r per substep
+constexpr int kMaxSlabs = 128;
+constexpr std::size_t kSharedContacts =
+    8192; // fewer contacts are resolved on one thread           // slabs of the grid: threads share these out
+constexpr int kReorderEvery = 32;   // substeps between re-orderings by cell
+constexpr double kMaxTravel = 0.25; // of r per substep
 constexpr int kMaxSubsteps = 1024;
 constexpr int kMaxWallEvents = 8; // located wall impacts of one ball in one substep
 constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -167,11 +169,11 @@ template <Integrator I> int flyLocated(double p[3], double v[3], double h, const
     return rebounds;
 }
 
-// Flies balls [begin, end); returns the largest squared speed after the flight. A ball left
-// at rest on the floor is marked as supported.
-template <Integrator I>
+// Flies balls [begin, end) and hands each new centre to `place`; returns the largest
+// squared speed after the flight. A ball left at rest on the floor is marked as supported.
+template <Integrator I, typename Place>
 double flyRange(double* x, double* y, double* z, double* vx, double* vy, double* vz, int* rebounds,
-                std::uint8_t* supported, int begin, int end, double h, const Walls& w, bool located)
+                std::uint8_t* supported, int begin, int end, double h, const Walls& w, bool located, const Place& place)
 {
     double maxSpeed2 = 0.0;
     for (int i = begin; i < end; ++i) {
@@ -195,6 +197,7 @@ double flyRange(double* x, double* y, double* z, double* vx, double* vy, double*
         if (resting && v[0] * v[0] + v[2] * v[2] < w.restSpeed * w.restSpeed)
             v[0] = v[2] = 0.0;
         supported[i] = resting;
+        place(i, p[0], p[1], p[2]);
         x[i] = p[0], y[i] = p[1], z[i] = p[2];
         vx[i] = v[0], vy[i] = v[1], vz[i] = v[2];
         maxSpeed2 = std::max(maxSpeed2, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -380,9 +383,12 @@ void ManyBallsEngine::substep(double h)
     std::size_t contacts = 0;
     for (const auto& list : pairs_)
         contacts += list.size();
+    // Few contacts cost less than waking the workers for each pass: then one thread
+    // resolves the slabs in the same order, with the same result.
+    const bool shared = contacts >= kSharedContacts;
     if (contacts > 0)
         for (Pass pass : kPasses)
-            resolvePass(pass);
+            resolvePass(pass, shared);
     maxSpeed_ = std::sqrt(*std::max_element(workerMaxSpeed2_.begin(), workerMaxSpeed2_.end()));
     if (grid && substepsDone_ % kReorderEvery == 0) {
         pool_->run([&](int w) { reorder(w); });
@@ -402,21 +408,20 @@ void ManyBallsEngine::fly(int worker, double h)
     const Walls walls{lo_, hi_, settings_.wallRestitution, restSpeed_, settings_.g};
     const bool located = settings_.impacts == ImpactMode::Located;
     const bool grid = settings_.broadphase == Broadphase::Grid;
-    const Share s = share(settings_.n, worker, pool_->size());
+    // The grid's own split (whole blocks), so that each worker places its own balls.
+    const Share s =
+        grid ? Share{grid_.partBegin(worker), grid_.partBegin(worker + 1)} : share(settings_.n, worker, pool_->size());
     double maxSpeed2 = 0.0;
     auto run = [&](auto integrator) {
-        // In blocks, so that the grid reads each block's new centres while they are in cache.
-        constexpr int kBlock = 2048;
+        auto fly = [&](const auto& place) {
+            maxSpeed2 =
+                flyRange<decltype(integrator)::value>(x, x + n, x + 2 * n, vx, vx + n, vx + 2 * n, rebounds_.data(),
+                                                      supported_.data(), s.first, s.last, h, walls, located, place);
+        };
         if (grid)
-            grid_.startAssign(worker);
-        for (int begin = s.first; begin < s.last; begin += kBlock) {
-            const int end = std::min(begin + kBlock, s.last);
-            maxSpeed2 = std::max(maxSpeed2, flyRange<decltype(integrator)::value>(
-                                                x, x + n, x + 2 * n, vx, vx + n, vx + 2 * n, rebounds_.data(),
-                                                supported_.data(), begin, end, h, walls, located));
-            if (grid)
-                grid_.assign(worker, begin, end, x, x + n, x + 2 * n);
-        }
+            fly(grid_.placer(worker));
+        else
+            fly([](int, double, double, double) {});
     };
     switch (settings_.integrator) {
     case Integrator::Euler:
@@ -458,7 +463,7 @@ void ManyBallsEngine::findPairs(int worker)
                              broadphase::allPairsRowBegin(settings_.n, worker + 1, workers), contact2, list);
 }
 
-void ManyBallsEngine::resolvePass(Pass pass)
+void ManyBallsEngine::resolvePass(Pass pass, bool shared)
 {
     if (settings_.broadphase != Broadphase::Grid) {
         // The all-pairs lists, joined in row order, are one sequence whatever the thread
@@ -469,11 +474,15 @@ void ManyBallsEngine::resolvePass(Pass pass)
     }
     const int slabs = grid_.slabCount();
     for (int parity = 0; parity < 2; ++parity) {
-        pool_->run([&](int w) {
-            const Share s = share((slabs - parity + 1) / 2, w, pool_->size());
+        auto resolveShare = [&](int w, int workers) {
+            const Share s = share((slabs - parity + 1) / 2, w, workers);
             for (int j = s.first; j < s.last; ++j)
                 resolveList(pairs_[static_cast<std::size_t>(parity + 2 * j)], pass, w);
-        });
+        };
+        if (shared)
+            pool_->run([&](int w) { resolveShare(w, pool_->size()); });
+        else
+            resolveShare(0, 1);
     }
 }
 

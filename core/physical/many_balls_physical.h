@@ -70,7 +70,7 @@ private:
     void substep(double h);
     void fly(int worker, double h);
     void findPairs(int worker);
-    void resolvePass(Pass pass);
+    void resolvePass(Pass pass, bool shared);
     void resolveList(const std::vector<broadphase::Pair>& pairs, Pass pass, int worker);
     void reorder(int worker);
     int substepsFor(double dt) const;

@@ -64,7 +64,7 @@ public:
     }
 
 private:
-    static constexpr int kSpins = 4000;
+    static constexpr int kSpins = 1000; // about 10-40 us of pause before sleeping
 
     static void relax()
     {

@@ -317,11 +317,13 @@ private slots:
     void runsAreBitIdenticalForAnyThreadCount()
     {
         // The same run on 1, 2 and 3 threads, and twice on 2: the slabs resolve their
-        // contacts in a fixed order, so every bit agrees.
+        // contacts in a fixed order, so every bit agrees. 20000 balls start on a lattice 2r
+        // apart, touching, so that each worker has several blocks of balls and the contacts
+        // are many enough to be shared out too.
         auto run = [](int threads) {
-            auto spec = physical({"n=3000", "g=9.82", "box=36", "seed=12"}, 1.0 / 240.0);
+            auto spec = physical({"n=20000", "g=9.82", "box=56", "seed=12"}, 1.0 / 240.0);
             spec.threads = threads;
-            return testing::record(spec, 240).back();
+            return testing::record(spec, 60).back();
         };
         const State one = run(1), two = run(2), again = run(2), three = run(3);
         QVERIFY(identical(two, again));
