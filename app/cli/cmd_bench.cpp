@@ -143,12 +143,13 @@ std::string number(double x, const char* format)
 
 void writeCsv(std::ostream& out, const std::vector<Row>& rows)
 {
-    out << "balls,broadphase,threads,ns_per_ball_step,steps_per_second,model,engine_mib,peak_rss_mib\n";
+    out << "balls,broadphase,threads,ns_per_ball_step,steps_per_second,model,cpu_ns_per_ball_step,engine_mib,"
+           "peak_rss_mib\n";
     for (const Row& r : rows)
         out << r.c.balls << "," << broadphaseKey(r.c.broadphase) << "," << r.c.threads << ","
             << number(r.timing.nsPerBallStep, "%.4g") << "," << number(r.timing.stepsPerSecond, "%.4g") << ","
-            << modelKey(r.c.model) << "," << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "") << ","
-            << number(r.peakMiB, "%.1f") << "\n";
+            << modelKey(r.c.model) << "," << number(r.timing.cpuNsPerBallStep, "%.4g") << ","
+            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "") << "," << number(r.peakMiB, "%.1f") << "\n";
 }
 
 void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Options& o)
@@ -182,7 +183,8 @@ int benchCommand(Args& args, std::ostream& out, std::ostream& err)
         if (o.out) // progress; the CSV goes to the file
             out << r.c.balls << " balls, " << modelKey(r.c.model) << ", " << broadphaseKey(r.c.broadphase) << ", "
                 << r.c.threads << " thread(s): " << number(r.timing.nsPerBallStep, "%.1f") << " ns per ball-step, "
-                << number(r.timing.stepsPerSecond, "%.4g") << " steps per second" << std::endl;
+                << number(r.timing.stepsPerSecond, "%.4g") << " steps per second, "
+                << number(r.timing.cpuNsPerBallStep, "%.1f") << " ns CPU" << std::endl;
     }
     if (o.out)
         writeFileAtomically(*o.out, [&](std::ostream& file) { writeCsv(file, rows); });
