@@ -13,5 +13,6 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err);
 int stabilityCommand(Args& args, std::ostream& out, std::ostream& err);
 int studyCommand(Args& args, std::ostream& out, std::ostream& err);
 int chartCommand(Args& args, std::ostream& out, std::ostream& err);
+int benchCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

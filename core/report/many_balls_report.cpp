@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Stage 4 as Appendix D codes it: one update per frame, each ball in index order moves,
 // checks the walls, then collides with the first other ball within c r, repeatedly.
+// The search for that ball is the report's scan of every other ball (`all-pairs`) or a
+// linked-cell grid (`grid`) that finds the same lowest index: the frame's result does
+// not depend on the broadphase.
 #include "report_models.h"
 
+#include "../broadphase/cell_list.h"
 #include "../random.h"
 
 #include <algorithm>
@@ -37,8 +41,8 @@ Eigen::Vector3d fixedTangent(const Eigen::Vector3d& n)
     return Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
 }
 
-void resolveReportPair(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, Eigen::Vector3d& v1,
-                       Eigen::Vector3d& v2, double e)
+void resolveReportPair(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, Eigen::Vector3d& v1, Eigen::Vector3d& v2,
+                       double e)
 {
     // Speeds are kept, swapped and damped: ball 1 leaves with e |v2|, ball 2 with e |v1|.
     const double l1 = e * v1.norm();
@@ -51,7 +55,7 @@ void resolveReportPair(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, Eig
     const Eigen::Vector3d u1n = u1.dot(n) * n;
     const Eigen::Vector3d u1t = u1.dot(t) * t; // kept (eq 2.26)
     const Eigen::Vector3d u2n = u2.dot(n) * n;
-    const Eigen::Vector3d u2t = u2.dot(t) * t; // kept (eq 2.27)
+    const Eigen::Vector3d u2t = u2.dot(t) * t;                            // kept (eq 2.27)
     const Eigen::Vector3d u2nAfter = (e * (u1n - u2n) + u1n + u2n) / 2.0; // eq 2.30 with its /2 (as 2.6)
     const Eigen::Vector3d u1nAfter = u1n + u2n - u2nAfter;                // eq 2.31 as intended
     // three.js's setLength: normalise (zero stays zero), then scale.
@@ -67,8 +71,16 @@ public:
         : Simulation(spec, 1.0), n_(static_cast<int>(spec.params.integer("n"))), r_(spec.params.real("r")),
           limit_(spec.params.real("box") / 2.0 - r_), g_(spec.params.real("g")),
           primary_(spec.params.real("primary_loss")), secondary_(spec.params.real("secondary_loss")),
-          maxBounces_(spec.params.integer("max_bounces")), contact_(spec.params.real("contact_factor") * r_)
+          maxBounces_(spec.params.integer("max_bounces")), contact_(spec.params.real("contact_factor") * r_),
+          broadphase_(spec.broadphase)
     {
+        if (broadphase_ == Broadphase::Grid) {
+            // Centres live within +-limit; balls pushed or flying beyond it fall in the
+            // border cells. Up to 8 cells a ball keeps a sparse box from costing memory.
+            const double side = std::max(2.0 * limit_, contact_);
+            cells_ = broadphase::GridGeometry(-side / 2.0, side, contact_,
+                                              std::max<std::size_t>(8 * static_cast<std::size_t>(n_), 64));
+        }
     }
 
     State initialState() const override
@@ -95,6 +107,8 @@ public:
         next = s;
         next.t = s.t + 1.0;
         State& b = next;
+        if (broadphase_ == Broadphase::Grid)
+            grid_.build(cells_, b.p);
         int repeats = 0; // shared by all balls of one frame, as `counter` in update_pos
         for (int i = 0; i < n_; ++i) {
             if (b.bounces[i] > maxBounces_ && b.p(1, i) < -limit_ + r_) {
@@ -108,14 +122,13 @@ public:
                 while (ballCheck(b, i) && repeats < 100)
                     ++repeats;
             }
+            if (broadphase_ == Broadphase::Grid)
+                grid_.move(i, b.p(0, i), b.p(1, i), b.p(2, i));
         }
     }
 
 private:
-    void clampAxis(State& b, int axis, int i) const
-    {
-        b.p(axis, i) = std::clamp(b.p(axis, i), -limit_, limit_);
-    }
+    void clampAxis(State& b, int axis, int i) const { b.p(axis, i) = std::clamp(b.p(axis, i), -limit_, limit_); }
 
     void wallCheck(State& b, int i) const
     {
@@ -149,32 +162,44 @@ private:
         ++b.bounces[i];
     }
 
+    // The lowest index j != i within c r of centre q, or -1.
+    int firstInContact(const State& b, int i, const Eigen::Vector3d& q) const
+    {
+        if (broadphase_ == Broadphase::Grid)
+            return grid_.lowestWithin(i, q, contact_, b.p);
+        for (int j = 0; j < n_; ++j)
+            if (j != i && broadphase::withinReach(q, b.p, j, contact_))
+                return j;
+        return -1;
+    }
+
     // The first other ball (lowest index) closer than c r is resolved; true if one was.
     bool ballCheck(State& b, int i) const
     {
         const Eigen::Vector3d pi = b.p.col(i);
-        for (int j = 0; j < n_; ++j) {
-            if (j == i || (pi - b.p.col(j)).norm() >= contact_)
-                continue;
-            Eigen::Vector3d vi = b.v.col(i);
-            Eigen::Vector3d vj = b.v.col(j);
-            resolveReportPair(pi, b.p.col(j), vi, vj, secondary_);
-            b.v.col(i) = vi;
-            b.v.col(j) = vj;
-            const int cap = static_cast<int>(maxBounces_ - 3);
-            b.bounces[i] = std::min(b.bounces[i], cap);
-            b.bounces[j] = std::min(b.bounces[j], cap);
-            // Ball 1 is pushed one radius (the code's 1 unit) along the normal, unclamped.
-            b.p.col(i) += r_ * normalizeOrZero(pi - b.p.col(j));
-            return true;
-        }
-        return false;
+        const int j = firstInContact(b, i, pi);
+        if (j < 0)
+            return false;
+        Eigen::Vector3d vi = b.v.col(i);
+        Eigen::Vector3d vj = b.v.col(j);
+        resolveReportPair(pi, b.p.col(j), vi, vj, secondary_);
+        b.v.col(i) = vi;
+        b.v.col(j) = vj;
+        const int cap = static_cast<int>(maxBounces_ - 3);
+        b.bounces[i] = std::min(b.bounces[i], cap);
+        b.bounces[j] = std::min(b.bounces[j], cap);
+        // Ball 1 is pushed one radius (the code's 1 unit) along the normal, unclamped.
+        b.p.col(i) += r_ * normalizeOrZero(pi - b.p.col(j));
+        return true;
     }
 
     int n_;
     double r_, limit_, g_, primary_, secondary_;
     long long maxBounces_;
     double contact_;
+    Broadphase broadphase_;
+    broadphase::GridGeometry cells_;
+    broadphase::CellList grid_;
 };
 
 } // namespace

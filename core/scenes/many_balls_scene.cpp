@@ -31,13 +31,18 @@ SceneInfo makeManyBalls()
         real("primary_loss", "k", "1", 0.9, 0.0, 1.0, "eq 2.3, Appendix D",
              "restitution of the velocity component normal to a wall or floor"),
         real("secondary_loss", "e", "1", 0.95, 0.0, 1.0, "eqs 2.28-2.31, Appendix D",
-             "ball-ball restitution, and the damping of the components along a wall"),
+             "ball-ball restitution along the line of centres (the report also damps the components along a wall "
+             "with it)"),
         integer("max_bounces", "count_max", 20, 3, 1e9, "Appendix D",
                 "a ball with more bounces than this, near the floor, is put to rest on it", ReportModel),
         real("contact_factor", "c", "1", 2.2, 1.0, 10.0, "Appendix D",
              "two balls collide when their centres are closer than c r", ReportModel),
         integer("seed", "seed", 2014, 0, 9007199254740992.0, "Appendix D",
                 "seed of the random start positions, velocities and colours"),
+        real("rest_height", "h_rest", "unit", 0.02, 0.0, 1e3, "v_rest = sqrt(2 g h_rest)",
+             "a rebound that would rise less than this ends at rest (restitution threshold), at walls and between "
+             "balls",
+             PhysicalModel),
     };
     s.crossCheck = [](const ParamValues& v) {
         if (v.real("box") <= 2.0 * v.real("r"))

@@ -390,8 +390,9 @@ std::vector<CaseRow> densePacking()
                           {"n=1000", "box=24"}, std::nullopt, 200);
     std::vector<CaseRow> rows{r};
     CaseRow denser = r;
-    denser.assignments = {"n=20000", "box=40"};
-    denser.setting = "n 20000 in a box of 40 (volume fraction 0.52), settling";
+    // 20^3 balls on the start lattice (spacing 2 r) fill a box of 40 exactly: pi/6 = 0.52.
+    denser.assignments = {"n=8000", "box=40"};
+    denser.setting = "n 8000 in a box of 40 (volume fraction 0.52), settling";
     append(rows, physicalRows(denser, impulseIntegrators));
     return rows;
 }
@@ -458,7 +459,8 @@ std::vector<CaseRow> extremeConstants()
     rows.push_back(one);
     append(rows, physicalRows(one, impulseIntegrators));
     CaseRow million =
-        reportRow("extreme-constants", "N = 1,000,000", SceneId::ManyBalls, {"n=1000000"}, std::nullopt, 10);
+        reportRow("extreme-constants", "N = 1,000,000 (a box of 200: the start lattice of 100^3 sites)",
+                  SceneId::ManyBalls, {"n=1000000", "box=200"}, std::nullopt, 10);
     million.skip = "the report's model tests every pair, 5e11 tests per frame";
     rows.push_back(million);
     CaseRow millionPhysical = million;

@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: MIT
+// `bench`: cost per ball-step of the many-balls scene on the benchmark workload
+// (core/physical/many_balls_physical.h): 100 warm-up steps, then `--repeats` blocks of
+// `--steps` timed steps, the median block per ball and step.
+#include "commands.h"
+
+#include "bench_protocol.h"
+#include "interrupt.h"
+
+#include "../../core/io/atomic_file.h"
+#include "../../core/physical/many_balls_physical.h"
+
+#include <cstdio>
+#include <optional>
+#include <ostream>
+
+namespace ab::cli {
+
+namespace {
+
+constexpr int kWarmupSteps = 100;
+constexpr int kAllPairsMax = 20'000;       // largest N the O(N^2) search is run for on request
+constexpr int kAllPairsDefaultMax = 1'000; // ... and when no broadphase is named
+const std::vector<int> kDefaultBalls{150, 1'000, 10'000, 100'000, 1'000'000};
+
+struct Case {
+    int balls;
+    ModelKind model;
+    Broadphase broadphase;
+    int threads;
+};
+
+struct Row {
+    Case c;
+    BallStepTiming timing;
+    std::optional<double> engineMiB; // physical model only
+    double peakMiB = 0.0;
+};
+
+struct Options {
+    std::vector<int> balls;
+    std::optional<Broadphase> broadphase;
+    ModelKind model = ModelKind::Physical;
+    int threads = 1;
+    int steps = 200;
+    int repeats = 5;
+    std::optional<std::string> out, markdown;
+};
+
+Options readOptions(Args& args)
+{
+    Options o;
+    for (const std::string& text : args.options("balls")) {
+        const long long n = parseInteger(text, "--balls");
+        if (n < 1 || n > 4'000'000)
+            throw InputError("--balls: " + std::to_string(n) + " is outside [1, 4000000]");
+        o.balls.push_back(static_cast<int>(n));
+    }
+    if (o.balls.empty())
+        o.balls = kDefaultBalls;
+    if (const auto text = args.option("broadphase")) {
+        o.broadphase = parseBroadphase(*text);
+        if (!o.broadphase)
+            throw InputError("--broadphase: unknown value '" + *text + "' (choose grid, all-pairs)");
+    }
+    if (const auto text = args.option("model")) {
+        const auto model = parseModel(*text);
+        if (!model)
+            throw InputError("--model: unknown value '" + *text + "' (choose physical, report)");
+        o.model = *model;
+    }
+    o.threads = static_cast<int>(args.integer("threads", 1, 256).value_or(1));
+    o.steps = static_cast<int>(args.integer("steps", 1, 1'000'000).value_or(o.steps));
+    o.repeats = static_cast<int>(args.integer("repeats", 1, 99).value_or(o.repeats));
+    o.out = args.option("out");
+    o.markdown = args.option("markdown");
+    args.finish();
+    if (o.model == ModelKind::Report && o.threads > 1)
+        throw InputError("--threads: the report model updates its balls one after another on one thread; use "
+                         "--threads 1 with --model report");
+    if (o.broadphase == Broadphase::AllPairs)
+        for (int n : o.balls)
+            if (n > kAllPairsMax)
+                throw InputError("--broadphase all-pairs: " + std::to_string(n) +
+                                 " balls is too many for the O(N^2) "
+                                 "search (at most " +
+                                 std::to_string(kAllPairsMax) + "); use grid");
+    return o;
+}
+
+// The cases in the order they run: each N with the grid, then all-pairs where it is asked
+// for or, by default, small enough.
+std::vector<Case> casesOf(const Options& o, std::ostream& err)
+{
+    std::vector<Case> cases;
+    for (int n : o.balls) {
+        if (!o.broadphase || *o.broadphase == Broadphase::Grid)
+            cases.push_back({n, o.model, Broadphase::Grid, o.threads});
+        if (o.broadphase == Broadphase::AllPairs)
+            cases.push_back({n, o.model, Broadphase::AllPairs, o.threads});
+        else if (!o.broadphase && n <= kAllPairsDefaultMax)
+            cases.push_back({n, o.model, Broadphase::AllPairs, o.threads});
+        else if (!o.broadphase)
+            err << "bench: all-pairs skipped for " << n << " balls (O(N^2); at most " << kAllPairsDefaultMax
+                << " by default, " << kAllPairsMax << " with --broadphase all-pairs)\n";
+    }
+    return cases;
+}
+
+Row measure(const Case& c, const Options& o)
+{
+    const RunSpec spec = physical::benchmarkSpec(c.balls, c.model, c.broadphase, c.threads);
+    Row row{c, {}, std::nullopt, 0.0};
+    if (c.model == ModelKind::Physical) {
+        // The engine steps in place: the cost of the simulation itself, without the copy
+        // into a State that the Simulation interface adds.
+        physical::ManyBallsEngine engine(physical::ManyBallsSettings::fromSpec(spec, *spec.dt));
+        engine.load(*spec.init);
+        row.timing = timeBallSteps(
+            c.balls, kWarmupSteps, o.steps, o.repeats, [&] { engine.step(); }, throwIfInterrupted);
+        row.engineMiB = static_cast<double>(engine.bytes()) / (1024.0 * 1024.0);
+    } else {
+        const auto sim = makeSimulation(spec);
+        State s = sim->start(), next;
+        row.timing = timeBallSteps(
+            c.balls, kWarmupSteps, o.steps, o.repeats,
+            [&] {
+                sim->step(s, next);
+                std::swap(s, next);
+            },
+            throwIfInterrupted);
+    }
+    row.peakMiB = peakResidentMiB();
+    return row;
+}
+
+std::string number(double x, const char* format)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, x);
+    return buffer;
+}
+
+void writeCsv(std::ostream& out, const std::vector<Row>& rows)
+{
+    out << "balls,broadphase,threads,ns_per_ball_step,steps_per_second,model,cpu_ns_per_ball_step,engine_mib,"
+           "peak_rss_mib\n";
+    for (const Row& r : rows)
+        out << r.c.balls << "," << broadphaseKey(r.c.broadphase) << "," << r.c.threads << ","
+            << number(r.timing.nsPerBallStep, "%.4g") << "," << number(r.timing.stepsPerSecond, "%.4g") << ","
+            << modelKey(r.c.model) << "," << number(r.timing.cpuNsPerBallStep, "%.4g") << ","
+            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "") << "," << number(r.peakMiB, "%.1f") << "\n";
+}
+
+void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Options& o)
+{
+    out << "| balls | model | broadphase | threads | ns per ball-step | steps per second | engine MiB | peak RSS MiB "
+           "|\n"
+           "| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+    for (const Row& r : rows)
+        out << "| " << r.c.balls << " | " << modelKey(r.c.model) << " | " << broadphaseKey(r.c.broadphase) << " | "
+            << r.c.threads << " | " << number(r.timing.nsPerBallStep, "%.1f") << " | "
+            << number(r.timing.stepsPerSecond, "%.4g") << " | " << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "-")
+            << " | " << number(r.peakMiB, "%.0f") << " |\n";
+    out << "\n"
+        << kWarmupSteps << " warm-up steps, then the median of " << o.repeats << " blocks of " << o.steps
+        << " timed steps.\n";
+}
+
+} // namespace
+
+int benchCommand(Args& args, std::ostream& out, std::ostream& err)
+{
+    const Options o = readOptions(args);
+    if (o.out)
+        checkWritable(*o.out);
+    if (o.markdown)
+        checkWritable(*o.markdown);
+    std::vector<Row> rows;
+    for (const Case& c : casesOf(o, err)) {
+        rows.push_back(measure(c, o));
+        const Row& r = rows.back();
+        if (o.out) // progress; the CSV goes to the file
+            out << r.c.balls << " balls, " << modelKey(r.c.model) << ", " << broadphaseKey(r.c.broadphase) << ", "
+                << r.c.threads << " thread(s): " << number(r.timing.nsPerBallStep, "%.1f") << " ns per ball-step, "
+                << number(r.timing.stepsPerSecond, "%.4g") << " steps per second, "
+                << number(r.timing.cpuNsPerBallStep, "%.1f") << " ns CPU" << std::endl;
+    }
+    if (o.out)
+        writeFileAtomically(*o.out, [&](std::ostream& file) { writeCsv(file, rows); });
+    else
+        writeCsv(out, rows);
+    if (o.markdown)
+        writeFileAtomically(*o.markdown, [&](std::ostream& file) { writeMarkdown(file, rows, o); });
+    return 0;
+}
+
+} // namespace ab::cli

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+// The uniform grid of the N-ball scene, rebuilt every step by a counting sort.
+//
+// 1. Cells are at least one contact distance wide (GridGeometry), so every pair in contact
+//    lies in one cell or two adjacent ones, and each ball needs only the 13 cells of half
+//    its neighbourhood (+x; the +y row; the 9 cells of the +z layer) to find each pair once.
+// 2. After the sort, order[cellStart[c] .. cellStart[c + 1]) are the balls of cell c in
+//    increasing index order (the sort is stable, so the result does not depend on how the
+//    work was shared out). The 3 cells x-1..x+1 of a row are one contiguous range there, so
+//    a ball's candidates are 5 ranges ("windows"), almost always 0 to 4 balls long.
+// 3. The sort also copies the centres into float arrays in that order. The pair search
+//    tests the first 4 places of every window at once, masked by the window's length (no
+//    branch that depends on it), in float with a margin that covers float rounding, and
+//    confirms each candidate with the exact test in double: the pairs are exactly those
+//    findAllPairs finds.
+// 4. The cube is cut into slabs of whole z layers. A pair is found from its ball with the
+//    lower z layer, so the pairs of slab s touch only slabs s and s + 1: slabs of one
+//    parity never share a ball, and threads can resolve them at the same time.
+// 5. The build runs in two stages that workers share: place (every ball's cell, over
+//    ranges of balls, counted per block of 4096 balls and slab), then sortPart (each
+//    worker counting-sorts the balls of its own slabs into its own cells, reading only the
+//    blocks that hold some of them: after the engine re-orders its balls by cell, about
+//    its own share).
+#pragma once
+
+#include "grid_geometry.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace ab::broadphase {
+
+struct Pair {
+    std::uint32_t a;
+    std::uint32_t b;
+};
+
+class UniformGrid {
+public:
+    // Sizes the grid for `balls` balls and `parts` workers, with at most `maxSlabs`
+    // (<= 255) slabs, fewer when there are fewer z layers.
+    void reset(const GridGeometry& geometry, int balls, int parts, int maxSlabs);
+
+    const GridGeometry& geometry() const { return geo_; }
+    int balls() const { return n_; }
+    int parts() const { return parts_; }
+    int slabCount() const { return static_cast<int>(slabFirstLayer_.size()) - 1; }
+
+    // Stage 1, one ball at a time, so that a caller can place each ball as soon as it has
+    // moved it: placer(part) clears worker `part`'s counts, then the placer takes every ball
+    // i of the part's range [partBegin(part), partBegin(part + 1)) with its centre.
+    class Placer {
+    public:
+        void operator()(int i, double x, double y, double z) const
+        {
+            const int iz = geo_->coord(z);
+            const std::uint8_t s = slabOfLayer_[iz];
+            cell_[i] = geo_->cell(geo_->coord(x), geo_->coord(y), iz);
+            slab_[i] = s;
+            ++count_[(static_cast<std::size_t>(i) >> kBlockShift) * slabs_ + s];
+        }
+
+    private:
+        friend class UniformGrid;
+        const GridGeometry* geo_ = nullptr;
+        const std::uint8_t* slabOfLayer_ = nullptr;
+        std::uint32_t* cell_ = nullptr;
+        std::uint8_t* slab_ = nullptr;
+        std::uint32_t* count_ = nullptr;
+        std::size_t slabs_ = 0;
+    };
+    Placer placer(int part);
+    // Stage 2, for worker `part` once every part's stage 1 is done: the balls of its slabs
+    // (slabShare) sorted into their cells, their centres copied.
+    void sortPart(int part, const double* x, const double* y, const double* z);
+    // Both stages on the calling thread.
+    void build(const double* x, const double* y, const double* z);
+
+    // Appends every pair (a, b) found from a ball of slab `s` whose centres are closer than
+    // sqrt(reach2) (strictly), by the same test as findAllPairs; a is the ball with the
+    // lower z layer (then lower y, lower x, then the earlier one in index order). x, y, z
+    // are the centres the grid was built from.
+    void findPairs(int s, const double* x, const double* y, const double* z, double reach2,
+                   std::vector<Pair>& out) const;
+
+    // The balls [partBegin(p), partBegin(p + 1)) of worker p in stage 1: whole blocks.
+    int partBegin(int part) const
+    {
+        const long long block = static_cast<long long>(blockCount()) * part / parts_;
+        return static_cast<int>(std::min<long long>(n_, block << kBlockShift));
+    }
+    // The slabs [slabShare(p), slabShare(p + 1)) of worker p in stage 2.
+    int slabShare(int part) const { return static_cast<int>(static_cast<long long>(slabCount()) * part / parts_); }
+    const std::vector<std::uint32_t>& order() const { return order_; }
+    const std::vector<std::uint32_t>& cellStart() const { return cellStart_; }
+    std::size_t bytes() const;
+
+private:
+    static constexpr int kBlockShift = 12; // blocks of 4096 balls
+    int blockCount() const { return (n_ + (1 << kBlockShift) - 1) >> kBlockShift; }
+    bool blockHolds(int block, int s0, int s1) const;
+
+    // Slab 0 starts with the border layer below the cube and the last one ends with the
+    // border layer above it, so every numbered cell is in one slab.
+    std::size_t slabFirstCell(int s) const
+    {
+        if (s == 0)
+            return 0;
+        if (s == slabCount())
+            return geo_.cellCount();
+        return static_cast<std::size_t>(slabFirstLayer_[static_cast<std::size_t>(s)] + 1) * geo_.layerStride();
+    }
+
+    GridGeometry geo_;
+    int n_ = 0;
+    int parts_ = 1;
+    float floatLo_ = 0.0f, floatHi_ = 0.0f;     // the float copies are clamped to this range
+    std::vector<int> slabFirstLayer_;           // slabCount() + 1 entries
+    std::vector<std::uint8_t> slabOfLayer_;     // per z layer
+    std::vector<std::uint32_t> cell_;           // per ball
+    std::vector<std::uint8_t> slab_;            // per ball
+    std::vector<std::uint32_t> blockSlabCount_; // blocks x slabs: balls of each block in each slab
+    std::vector<std::uint32_t> order_;          // balls sorted by cell
+    std::vector<std::uint32_t> sortedCell_;     // their cells
+    std::vector<float> fx_, fy_, fz_;           // their centres less lo, in float, 4 spare at the end
+    std::vector<std::uint32_t> cellStart_;      // cellCount() + 1
+};
+
+// Every pair closer than sqrt(reach2), by testing all of them: the reference the grid
+// must agree with, and the report's own O(N^2) search. Pairs come with a < b, in (a, b)
+// order; the second form covers the rows a in [rowBegin, rowEnd) only, so workers can
+// share the search and their lists, joined in row order, equal the whole list.
+void findAllPairs(const double* x, const double* y, const double* z, int n, double reach2, std::vector<Pair>& out);
+void findAllPairs(const double* x, const double* y, const double* z, int n, int rowBegin, int rowEnd, double reach2,
+                  std::vector<Pair>& out);
+// Where worker `part` of `parts` starts its rows so that each tests about as many pairs
+// (row a tests n - 1 - a of them).
+int allPairsRowBegin(int n, int part, int parts);
+
+} // namespace ab::broadphase
