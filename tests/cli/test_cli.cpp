@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // amazeballs-cli run in process: list, run (reproducing the report's listings), and
 // every kind of bad input giving exit status 2 with one line naming it.
-#include "app/cli/cli.h"
+#include "support/cli_runner.h"
 #include "support/report_listings.h"
 
 #include <QTemporaryDir>
@@ -13,17 +13,8 @@
 
 namespace {
 
-struct Result {
-    int status;
-    std::string out, err;
-};
-
-Result cli(std::vector<std::string> args)
-{
-    std::ostringstream out, err;
-    const int status = ab::cli::run(args, out, err);
-    return {status, out.str(), err.str()};
-}
+using testing::cli;
+using Result = testing::CliResult;
 
 struct Row {
     double t;
@@ -49,11 +40,7 @@ std::vector<Row> parseCsv(const std::string& text)
     return rows;
 }
 
-std::string readFile(const std::filesystem::path& p)
-{
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using testing::readFile;
 
 } // namespace
 

@@ -2,7 +2,7 @@
 // amazeballs-cli bench, run in process on small N: the CSV carries the contract's columns
 // with a finite positive cost for every case, the Markdown table is written, and every
 // bad argument exits with status 2, one line on stderr and no file left behind.
-#include "app/cli/cli.h"
+#include "support/cli_runner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -14,17 +14,8 @@
 
 namespace {
 
-struct Result {
-    int status;
-    std::string out, err;
-};
-
-Result cli(std::vector<std::string> args)
-{
-    std::ostringstream out, err;
-    const int status = ab::cli::run(args, out, err);
-    return {status, out.str(), err.str()};
-}
+using testing::cli;
+using Result = testing::CliResult;
 
 std::vector<std::string> split(const std::string& line)
 {

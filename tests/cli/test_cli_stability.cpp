@@ -3,7 +3,7 @@
 // overflows stops before the first non-finite state with status 3 and a valid CSV; the
 // report model's known failures are named on stderr; `stability` writes its table and
 // files and refuses unknown cases.
-#include "app/cli/cli.h"
+#include "support/cli_runner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -14,23 +14,10 @@
 
 namespace {
 
-struct Result {
-    int status;
-    std::string out, err;
-};
+using testing::cli;
+using Result = testing::CliResult;
 
-Result cli(std::vector<std::string> args)
-{
-    std::ostringstream out, err;
-    const int status = ab::cli::run(args, out, err);
-    return {status, out.str(), err.str()};
-}
-
-std::string readFile(const std::filesystem::path& p)
-{
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using testing::readFile;
 
 long lines(const std::string& s)
 {

@@ -2,7 +2,7 @@
 // `amazeballs-cli study` in process: the CSV with the contract's columns, the Markdown
 // report, the chart as PNG and SVG, progress on stderr, bad input refused (exit 2, one
 // line, no file), and Ctrl+C leaving no file behind.
-#include "app/cli/cli.h"
+#include "support/cli_runner.h"
 #include "app/cli/interrupt.h"
 
 #include <QImage>
@@ -16,23 +16,10 @@
 
 namespace {
 
-struct Result {
-    int status;
-    std::string out, err;
-};
+using testing::cli;
+using Result = testing::CliResult;
 
-Result cli(std::vector<std::string> args)
-{
-    std::ostringstream out, err;
-    const int status = ab::cli::run(args, out, err);
-    return {status, out.str(), err.str()};
-}
-
-std::string readFile(const std::filesystem::path& p)
-{
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using testing::readFile;
 
 // A sweep of two steps, one repeat: quick, and every method present.
 std::vector<std::string> small(std::vector<std::string> args)

@@ -2,7 +2,7 @@
 // `amazeballs-cli chart` in process: it writes the window's chart as a PNG that decodes
 // and shows something, and as an SVG that parses with an <svg> root; bad input exits
 // with status 2, one line naming it, and no file.
-#include "app/cli/cli.h"
+#include "support/cli_runner.h"
 
 #include <QFile>
 #include <QImage>
@@ -15,17 +15,8 @@
 
 namespace {
 
-struct Result {
-    int status;
-    std::string out, err;
-};
-
-Result cli(std::vector<std::string> args)
-{
-    std::ostringstream out, err;
-    const int status = ab::cli::run(args, out, err);
-    return {status, out.str(), err.str()};
-}
+using testing::cli;
+using Result = testing::CliResult;
 
 // Distinct colours in a coarse grid of the image: a blank image has one.
 int distinctColours(const QImage& image)
