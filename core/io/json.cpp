@@ -43,6 +43,17 @@ Value Value::makeArray(std::vector<Value> items)
     return v;
 }
 
+Value Value::makeArray()
+{
+    return makeArray(std::vector<Value>());
+}
+
+bool operator==(const Value& a, const Value& b)
+{
+    return a.kind == b.kind && a.boolean == b.boolean && a.number == b.number && a.text == b.text &&
+           a.items == b.items && a.members == b.members;
+}
+
 Value Value::makeObject()
 {
     Value v;

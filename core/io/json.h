@@ -32,7 +32,8 @@ struct Value {
     static Value makeBool(bool b);
     static Value makeNumber(double x);
     static Value makeString(std::string s);
-    static Value makeArray(std::vector<Value> items = {});
+    static Value makeArray();
+    static Value makeArray(std::vector<Value> items);
     static Value makeObject();
 
     // Object only: appends a member (the caller keeps keys unique); returns *this.
@@ -40,7 +41,8 @@ struct Value {
     // Object only: the member's value, or nullptr.
     const Value* find(std::string_view key) const;
 
-    friend bool operator==(const Value&, const Value&) = default;
+    // Defined where Member is complete (clang with libstdc++ needs it for the members).
+    friend bool operator==(const Value& a, const Value& b);
 };
 
 struct Member {
