@@ -154,17 +154,18 @@ void writeCsv(std::ostream& out, const std::vector<Row>& rows)
 
 void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Options& o)
 {
-    out << "| balls | model | broadphase | threads | ns per ball-step | steps per second | engine MiB | peak RSS MiB "
-           "|\n"
-           "| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+    out << "| balls | model | broadphase | threads | ns per ball-step | steps per second | CPU ns per ball-step | "
+           "engine MiB | peak RSS MiB |\n"
+           "| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const Row& r : rows)
         out << "| " << r.c.balls << " | " << modelKey(r.c.model) << " | " << broadphaseKey(r.c.broadphase) << " | "
             << r.c.threads << " | " << number(r.timing.nsPerBallStep, "%.1f") << " | "
-            << number(r.timing.stepsPerSecond, "%.4g") << " | " << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "-")
-            << " | " << number(r.peakMiB, "%.0f") << " |\n";
+            << number(r.timing.stepsPerSecond, "%.4g") << " | " << number(r.timing.cpuNsPerBallStep, "%.1f") << " | "
+            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "-") << " | " << number(r.peakMiB, "%.0f") << " |\n";
     out << "\n"
         << kWarmupSteps << " warm-up steps, then the median of " << o.repeats << " blocks of " << o.steps
-        << " timed steps.\n";
+        << " timed steps. ns per ball-step is wall time; CPU ns is the process's CPU time over the same blocks, all "
+           "threads together.\n";
 }
 
 } // namespace
