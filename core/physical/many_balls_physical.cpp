@@ -312,6 +312,9 @@ ManyBallsEngine::ManyBallsEngine(const ManyBallsSettings& settings)
     } else {
         pairs_.resize(static_cast<std::size_t>(std::clamp(n, 1, kAllPairsChunks)));
     }
+    // Room for about one contact a ball; lists that need more grow (doubling), once.
+    for (auto& list : pairs_)
+        list.reserve(static_cast<std::size_t>(n) / pairs_.size() + 64);
 }
 
 ManyBallsEngine::~ManyBallsEngine() = default;
