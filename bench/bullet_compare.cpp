@@ -212,9 +212,9 @@ int main(int argc, char** argv)
                << number(rows[i].timing.cpuNsPerBallStep, "%.1f") << " / "
                << number(rows[i + 1].timing.cpuNsPerBallStep, "%.0f") << " | " << number(rows[i].kineticEnergy, "%.4g")
                << " / " << number(rows[i + 1].kineticEnergy, "%.4g") << " |\n";
-        md << "\nOne thread each; " << kWarmupSteps << " warm-up steps, then the median of " << o.repeats
-           << " blocks of " << o.steps << " timed steps; peak resident memory of the process " << number(rss, "%.0f")
-           << " MiB.\n";
+        md << "\nOne thread each; the median of " << o.repeats << " runs from the start, each " << kWarmupSteps
+           << " warm-up steps then " << o.steps << " timed steps; peak resident memory of the process "
+           << number(rss, "%.0f") << " MiB.\n";
     }
     return 0;
 }
