@@ -15,7 +15,7 @@ struct Workload {
         : n(n), side(ab::physical::benchmarkBoxSide(n)), start(ab::physical::jitteredGridStart(n, 1.0, side, 1.0, 2014))
     {
         grid.reset(ab::broadphase::GridGeometry(-side / 2.0 + 1.0, side - 2.0, 2.0, 8 * static_cast<std::size_t>(n)), n,
-                   1, 128);
+                   128);
     }
     const double* x() const { return start.p.data(); }
     const double* y() const { return x() + n; }

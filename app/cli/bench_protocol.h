@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The timing protocol of `amazeballs-cli bench`, shared with the Bullet comparison so
-// both are measured the same way: warm-up steps, then `repeats` blocks of `steps` timed
-// steps; the result is the median block's wall time per ball and step. The process's CPU
+// both are measured the same way: `repeats` runs of the same workload, each from its
+// start: `warmup` untimed steps, then `steps` timed ones; the result is the median run's
+// wall time per ball and step. The process's CPU
 // time is taken over the same blocks: on a busy machine wall time grows with the time the
 // process waits for a core, CPU time much less (with several threads it adds theirs up).
 #pragma once
@@ -35,18 +36,20 @@ inline double median(std::vector<double> values)
     return values.size() % 2 ? values[m] : 0.5 * (values[m - 1] + values[m]);
 }
 
-// `step` advances all `balls` balls by one step; `between` runs after each timed block
-// (to poll for Ctrl+C) and is not timed.
-template <typename Step, typename Between>
-BallStepTiming timeBallSteps(int balls, int warmup, int steps, int repeats, Step&& step, Between&& between)
+// `start` puts the workload back at its first state, `step` advances all `balls` balls by
+// one step, `between` runs after each run (to poll for Ctrl+C); only the timed steps are
+// timed.
+template <typename Start, typename Step, typename Between>
+BallStepTiming timeBallSteps(int balls, int warmup, int steps, int repeats, Start&& start, Step&& step,
+                             Between&& between)
 {
     using Clock = std::chrono::steady_clock;
-    for (int i = 0; i < warmup; ++i)
-        step();
-    between();
     std::vector<double> wall, cpu;
     const double ballSteps = static_cast<double>(steps) * balls;
     for (int r = 0; r < repeats; ++r) {
+        start();
+        for (int i = 0; i < warmup; ++i)
+            step();
         const double cpuStart = processCpuNanoseconds();
         const auto start = Clock::now();
         for (int i = 0; i < steps; ++i)

@@ -19,12 +19,14 @@ struct Command {
 };
 
 const std::array commands{
-    Command{"list", "list                      scenes, parameters (unit, default, range, equation), models, integrators",
+    Command{"list",
+            "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
     Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
-    Command{"bench", "bench [options]           cost per ball-step of many-balls (--balls N... --threads T\n"
-                     "                            --broadphase grid|all-pairs --model physical|report --steps S\n"
-                     "                            --repeats R --out FILE.csv --markdown FILE.md)",
+    Command{"bench",
+            "bench [options]           cost per ball-step of many-balls (--balls N... --threads T\n"
+            "                            --broadphase grid|all-pairs --model physical|report --steps S\n"
+            "                            --repeats R --out FILE.csv --markdown FILE.md)",
             benchCommand},
     Command{"chart",
             "chart SCENE [options]     the window's chart of one ball as PNG or SVG, headless:\n"

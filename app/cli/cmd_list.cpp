@@ -29,8 +29,8 @@ void listScene(const SceneInfo& s, std::ostream& out)
 {
     out << s.key << "  (stage " << s.stage << ": " << s.title << "; report " << s.reportRef << ")\n";
     out << "  time in " << s.timeUnit << ", lengths in " << s.lengthUnit << "; the report's step "
-        << formatNumber(s.reportDt) << " " << s.timeUnit << ", " << s.reportSteps << " steps; balls: "
-        << (s.ballCount ? std::to_string(s.ballCount) : std::string("n")) << "\n";
+        << formatNumber(s.reportDt) << " " << s.timeUnit << ", " << s.reportSteps
+        << " steps; balls: " << (s.ballCount ? std::to_string(s.ballCount) : std::string("n")) << "\n";
     std::size_t wKey = 4, wUnit = 4, wDef = 7, wRange = 5, wEq = 8;
     for (const ParamSpec& p : s.params) {
         wKey = std::max(wKey, p.key.size());
@@ -41,10 +41,10 @@ void listScene(const SceneInfo& s, std::ostream& out)
     }
     auto row = [&](const std::string& key, const std::string& unit, const std::string& def, const std::string& range,
                    const std::string& eq, const std::string& models, const std::string& meaning) {
-        out << "  " << std::left << std::setw(static_cast<int>(wKey)) << key << "  " << std::setw(static_cast<int>(wUnit))
-            << unit << "  " << std::setw(static_cast<int>(wDef)) << def << "  " << std::setw(static_cast<int>(wRange))
-            << range << "  " << std::setw(static_cast<int>(wEq)) << eq << "  " << std::setw(8) << models << "  "
-            << meaning << "\n";
+        out << "  " << std::left << std::setw(static_cast<int>(wKey)) << key << "  "
+            << std::setw(static_cast<int>(wUnit)) << unit << "  " << std::setw(static_cast<int>(wDef)) << def << "  "
+            << std::setw(static_cast<int>(wRange)) << range << "  " << std::setw(static_cast<int>(wEq)) << eq << "  "
+            << std::setw(8) << models << "  " << meaning << "\n";
     };
     row("name", "unit", "default", "range", "equation", "models", "meaning");
     for (const ParamSpec& p : s.params)

@@ -53,8 +53,8 @@ struct Summary {
         out << info.key << " (stage " << info.stage << "), " << modelKey(spec.model) << " model";
         if (spec.model == ModelKind::Physical)
             out << ", " << integratorKey(spec.integrator);
-        out << ", dt " << formatNumber(sim.dt()) << " " << info.timeUnit << ", " << (states - 1) << " steps to t = "
-            << formatNumber(last.t) << " " << info.timeUnit << "\n";
+        out << ", dt " << formatNumber(sim.dt()) << " " << info.timeUnit << ", " << (states - 1)
+            << " steps to t = " << formatNumber(last.t) << " " << info.timeUnit << "\n";
         if (firstContactIndex >= 0)
             out << "first contact: in the step from t = " << formatNumber(firstContactT) << " " << info.timeUnit
                 << "\n";

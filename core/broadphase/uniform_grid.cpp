@@ -67,13 +67,12 @@ float floatThreshold(double reach2, double side)
 
 } // namespace
 
-void UniformGrid::reset(const GridGeometry& geometry, int balls, int parts, int maxSlabs)
+void UniformGrid::reset(const GridGeometry& geometry, int balls, int maxSlabs)
 {
-    if (balls < 0 || parts < 1 || maxSlabs < 1 || maxSlabs > 255)
-        throw std::invalid_argument("grid: bad ball, worker or slab count");
+    if (balls < 0 || maxSlabs < 1 || maxSlabs > 255)
+        throw std::invalid_argument("grid: bad ball or slab count");
     geo_ = geometry;
     n_ = balls;
-    parts_ = parts;
     floatLo_ = 0.0f;
     floatHi_ = static_cast<float>(geo_.side());
     const int m = geo_.perAxis();
@@ -95,61 +94,52 @@ void UniformGrid::reset(const GridGeometry& geometry, int balls, int parts, int 
     fy_.assign(n + 4, 0.0f);
     fz_.assign(n + 4, 0.0f);
     blockSlabCount_.assign(static_cast<std::size_t>(blockCount()) * slabs, 0);
+    slabBegin_.assign(static_cast<std::size_t>(slabs) + 1, 0);
     cellStart_.assign(geo_.cellCount() + 1, 0);
     cellStart_.back() = static_cast<std::uint32_t>(balls);
 }
 
-UniformGrid::Placer UniformGrid::placer(int part)
+UniformGrid::Placer UniformGrid::placer(int block)
 {
-    const int slabs = slabCount();
+    const auto slabs = static_cast<std::size_t>(slabCount());
     Placer p;
     p.geo_ = &geo_;
     p.slabOfLayer_ = slabOfLayer_.data();
     p.cell_ = cell_.data();
     p.slab_ = slab_.data();
-    p.count_ = blockSlabCount_.data();
-    p.slabs_ = static_cast<std::size_t>(slabs);
-    // Parts are whole blocks (the last one may end early), so each clears its own rows.
-    const std::size_t first = static_cast<std::size_t>(partBegin(part)) >> kBlockShift;
-    const std::size_t end = (static_cast<std::size_t>(partBegin(part + 1)) + (1u << kBlockShift) - 1) >> kBlockShift;
-    std::fill(p.count_ + first * slabs, p.count_ + end * slabs, 0u);
+    p.count_ = blockSlabCount_.data() + static_cast<std::size_t>(block) * slabs;
+    std::fill(p.count_, p.count_ + slabs, 0u);
     return p;
 }
 
-bool UniformGrid::blockHolds(int block, int s0, int s1) const
+void UniformGrid::countSlabs()
 {
-    const std::uint32_t* count = blockSlabCount_.data() + static_cast<std::size_t>(block) * slabCount();
-    return std::any_of(count + s0, count + s1, [](std::uint32_t c) { return c != 0; });
+    const int slabs = slabCount();
+    std::fill(slabBegin_.begin(), slabBegin_.end(), 0u);
+    for (int b = 0; b < blockCount(); ++b)
+        for (int s = 0; s < slabs; ++s)
+            slabBegin_[static_cast<std::size_t>(s) + 1] += blockSlabCount_[static_cast<std::size_t>(b) * slabs + s];
+    for (int s = 0; s < slabs; ++s)
+        slabBegin_[static_cast<std::size_t>(s) + 1] += slabBegin_[static_cast<std::size_t>(s)];
 }
 
-void UniformGrid::sortPart(int part, const double* x, const double* y, const double* z)
+void UniformGrid::sortSlab(int s, const double* x, const double* y, const double* z)
 {
-    const int s0 = slabShare(part), s1 = slabShare(part + 1);
-    if (s0 == s1)
-        return;
-    const int slabs = slabCount(), blocks = blockCount();
-    // Where this part's balls start: every ball of a lower slab comes first.
-    std::uint32_t base = 0;
-    for (int b = 0; b < blocks; ++b)
-        for (int s = 0; s < s0; ++s)
-            base += blockSlabCount_[static_cast<std::size_t>(b) * slabs + s];
-    const std::size_t c0 = slabFirstCell(s0), c1 = slabFirstCell(s1);
+    const int slabs = slabCount();
+    const std::size_t c0 = slabFirstCell(s), c1 = slabFirstCell(s + 1);
     std::uint32_t* start = cellStart_.data();
     std::fill(start + c0, start + c1, 0u);
-    const auto mine = [&](std::size_t i) {
-        return static_cast<unsigned>(slab_[i] - s0) < static_cast<unsigned>(s1 - s0);
-    };
-    const auto blockEnd = [&](int b) {
-        return std::min<std::size_t>(static_cast<std::size_t>(n_), (b + 1ull) << kBlockShift);
-    };
-    for (int b = 0; b < blocks; ++b)
-        if (blockHolds(b, s0, s1))
-            for (std::size_t i = static_cast<std::size_t>(b) << kBlockShift; i < blockEnd(b); ++i)
-                if (mine(i))
+    // Only the blocks that hold balls of this slab are read.
+    const auto holds = [&](int b) { return blockSlabCount_[static_cast<std::size_t>(b) * slabs + s] != 0; };
+    const auto blockEnd = [&](int b) { return static_cast<std::size_t>(blockBegin(b + 1)); };
+    for (int b = 0; b < blockCount(); ++b)
+        if (holds(b))
+            for (std::size_t i = static_cast<std::size_t>(blockBegin(b)); i < blockEnd(b); ++i)
+                if (slab_[i] == s)
                     ++start[cell_[i]];
     // Counts to end positions, then place from the last ball back: each cell keeps its
     // balls in index order and start[c] ends as the first position of cell c.
-    std::uint32_t running = base;
+    std::uint32_t running = slabBegin_[static_cast<std::size_t>(s)];
     for (std::size_t c = c0; c < c1; ++c) {
         running += start[c];
         start[c] = running;
@@ -157,11 +147,11 @@ void UniformGrid::sortPart(int part, const double* x, const double* y, const dou
     const double lo = geo_.lo(), side = geo_.side();
     // Clamped to the cube, which never brings two coordinates further apart.
     const auto copy = [&](double v) { return static_cast<float>(std::clamp(v - lo, 0.0, side)); };
-    for (int b = blocks - 1; b >= 0; --b) {
-        if (!blockHolds(b, s0, s1))
+    for (int b = blockCount() - 1; b >= 0; --b) {
+        if (!holds(b))
             continue;
-        for (std::size_t i = blockEnd(b); i-- > static_cast<std::size_t>(b) << kBlockShift;) {
-            if (!mine(i))
+        for (std::size_t i = blockEnd(b); i-- > static_cast<std::size_t>(blockBegin(b));) {
+            if (slab_[i] != s)
                 continue;
             const std::uint32_t c = cell_[i];
             const std::uint32_t q = --start[c];
@@ -176,13 +166,14 @@ void UniformGrid::sortPart(int part, const double* x, const double* y, const dou
 
 void UniformGrid::build(const double* x, const double* y, const double* z)
 {
-    for (int p = 0; p < parts_; ++p) {
-        const Placer place = placer(p);
-        for (int i = partBegin(p); i < partBegin(p + 1); ++i)
+    for (int b = 0; b < blockCount(); ++b) {
+        const Placer place = placer(b);
+        for (int i = blockBegin(b); i < blockBegin(b + 1); ++i)
             place(i, x[i], y[i], z[i]);
     }
-    for (int p = 0; p < parts_; ++p)
-        sortPart(p, x, y, z);
+    countSlabs();
+    for (int s = 0; s < slabCount(); ++s)
+        sortSlab(s, x, y, z);
 }
 
 void UniformGrid::findPairs(int s, const double* x, const double* y, const double* z, double reach2,
@@ -247,7 +238,8 @@ std::size_t UniformGrid::bytes() const
     return (cell_.capacity() + order_.capacity() + sortedCell_.capacity() + cellStart_.capacity() +
             blockSlabCount_.capacity()) *
                sizeof(std::uint32_t) +
-           slab_.capacity() + (fx_.capacity() + fy_.capacity() + fz_.capacity()) * sizeof(float);
+           slab_.capacity() + slabBegin_.capacity() * sizeof(std::uint32_t) +
+           (fx_.capacity() + fy_.capacity() + fz_.capacity()) * sizeof(float);
 }
 
 void findAllPairs(const double* x, const double* y, const double* z, int n, double reach2, std::vector<Pair>& out)

@@ -16,11 +16,11 @@
 // 4. The cube is cut into slabs of whole z layers. A pair is found from its ball with the
 //    lower z layer, so the pairs of slab s touch only slabs s and s + 1: slabs of one
 //    parity never share a ball, and threads can resolve them at the same time.
-// 5. The build runs in two stages that workers share: place (every ball's cell, over
-//    ranges of balls, counted per block of 4096 balls and slab), then sortPart (each
-//    worker counting-sorts the balls of its own slabs into its own cells, reading only the
-//    blocks that hold some of them: after the engine re-orders its balls by cell, about
-//    its own share).
+// 5. The build runs in stages that workers share item by item: place (every ball's cell,
+//    block by block of 1024 balls, counted per block and slab), countSlabs (where each
+//    slab starts, on one thread), then sortSlab (each slab counting-sorts its balls into
+//    its cells, reading only the blocks that hold some of them: once the engine has
+//    re-ordered its balls by cell, about its own share).
 #pragma once
 
 #include "grid_geometry.h"
@@ -38,18 +38,22 @@ struct Pair {
 
 class UniformGrid {
 public:
-    // Sizes the grid for `balls` balls and `parts` workers, with at most `maxSlabs`
-    // (<= 255) slabs, fewer when there are fewer z layers.
-    void reset(const GridGeometry& geometry, int balls, int parts, int maxSlabs);
+    // Blocks of balls [b 1024, (b + 1) 1024): the unit of the first stage.
+    static constexpr int kBlockShift = 10;
+    static constexpr int kBlockSize = 1 << kBlockShift;
+
+    // Sizes the grid for `balls` balls with at most `maxSlabs` (<= 255) slabs, fewer when
+    // there are fewer z layers.
+    void reset(const GridGeometry& geometry, int balls, int maxSlabs);
 
     const GridGeometry& geometry() const { return geo_; }
     int balls() const { return n_; }
-    int parts() const { return parts_; }
+    int blockCount() const { return (n_ + kBlockSize - 1) >> kBlockShift; }
     int slabCount() const { return static_cast<int>(slabFirstLayer_.size()) - 1; }
 
     // Stage 1, one ball at a time, so that a caller can place each ball as soon as it has
-    // moved it: placer(part) clears worker `part`'s counts, then the placer takes every ball
-    // i of the part's range [partBegin(part), partBegin(part + 1)) with its centre.
+    // moved it: placer(b) clears block b's counts, then the placer takes every ball i of
+    // the block with its centre.
     class Placer {
     public:
         void operator()(int i, double x, double y, double z) const
@@ -58,7 +62,7 @@ public:
             const std::uint8_t s = slabOfLayer_[iz];
             cell_[i] = geo_->cell(geo_->coord(x), geo_->coord(y), iz);
             slab_[i] = s;
-            ++count_[(static_cast<std::size_t>(i) >> kBlockShift) * slabs_ + s];
+            ++count_[s];
         }
 
     private:
@@ -67,14 +71,14 @@ public:
         const std::uint8_t* slabOfLayer_ = nullptr;
         std::uint32_t* cell_ = nullptr;
         std::uint8_t* slab_ = nullptr;
-        std::uint32_t* count_ = nullptr;
-        std::size_t slabs_ = 0;
+        std::uint32_t* count_ = nullptr; // the block's row
     };
-    Placer placer(int part);
-    // Stage 2, for worker `part` once every part's stage 1 is done: the balls of its slabs
-    // (slabShare) sorted into their cells, their centres copied.
-    void sortPart(int part, const double* x, const double* y, const double* z);
-    // Both stages on the calling thread.
+    Placer placer(int block);
+    // Stage 2, on one thread once every block is placed: where each slab's balls start.
+    void countSlabs();
+    // Stage 3: slab s sorts its balls into its cells and copies their centres.
+    void sortSlab(int s, const double* x, const double* y, const double* z);
+    // All stages on the calling thread.
     void build(const double* x, const double* y, const double* z);
 
     // Appends every pair (a, b) found from a ball of slab `s` whose centres are closer than
@@ -84,23 +88,13 @@ public:
     void findPairs(int s, const double* x, const double* y, const double* z, double reach2,
                    std::vector<Pair>& out) const;
 
-    // The balls [partBegin(p), partBegin(p + 1)) of worker p in stage 1: whole blocks.
-    int partBegin(int part) const
-    {
-        const long long block = static_cast<long long>(blockCount()) * part / parts_;
-        return static_cast<int>(std::min<long long>(n_, block << kBlockShift));
-    }
-    // The slabs [slabShare(p), slabShare(p + 1)) of worker p in stage 2.
-    int slabShare(int part) const { return static_cast<int>(static_cast<long long>(slabCount()) * part / parts_); }
+    // The balls [blockBegin(b), blockBegin(b + 1)) of block b.
+    int blockBegin(int block) const { return std::min(n_, block << kBlockShift); }
     const std::vector<std::uint32_t>& order() const { return order_; }
     const std::vector<std::uint32_t>& cellStart() const { return cellStart_; }
     std::size_t bytes() const;
 
 private:
-    static constexpr int kBlockShift = 12; // blocks of 4096 balls
-    int blockCount() const { return (n_ + (1 << kBlockShift) - 1) >> kBlockShift; }
-    bool blockHolds(int block, int s0, int s1) const;
-
     // Slab 0 starts with the border layer below the cube and the last one ends with the
     // border layer above it, so every numbered cell is in one slab.
     std::size_t slabFirstCell(int s) const
@@ -114,13 +108,13 @@ private:
 
     GridGeometry geo_;
     int n_ = 0;
-    int parts_ = 1;
     float floatLo_ = 0.0f, floatHi_ = 0.0f;     // the float copies are clamped to this range
     std::vector<int> slabFirstLayer_;           // slabCount() + 1 entries
     std::vector<std::uint8_t> slabOfLayer_;     // per z layer
     std::vector<std::uint32_t> cell_;           // per ball
     std::vector<std::uint8_t> slab_;            // per ball
     std::vector<std::uint32_t> blockSlabCount_; // blocks x slabs: balls of each block in each slab
+    std::vector<std::uint32_t> slabBegin_;      // slabCount() + 1: where each slab's balls start
     std::vector<std::uint32_t> order_;          // balls sorted by cell
     std::vector<std::uint32_t> sortedCell_;     // their cells
     std::vector<float> fx_, fy_, fz_;           // their centres less lo, in float, 4 spare at the end

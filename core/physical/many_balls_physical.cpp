@@ -10,10 +10,12 @@
 //    impulses, every pass moves the two centres apart along the normal, half the overlap
 //    each, never through a wall. A velocity that an impulse turns into a wall meets the
 //    wall in the next substep's flight.
-// 3. Threads: the flight shares out ranges of balls; the grid's slabs share out the sort,
-//    the pair search and, even slabs then odd slabs, the contacts (uniform_grid.h). Each
-//    ball's numbers come from the same operations in the same order whatever the thread
-//    count, so runs are bit-identical for 1, 2 or more threads.
+// 3. Threads take the work item by item (WorkerPool::forEach): blocks of 4096 balls for
+//    the flight, the grid's slabs for the sort, the pair search and, even slabs then odd
+//    slabs, the contacts (uniform_grid.h). Each ball's numbers come from the same
+//    operations in the same order whoever does an item, so runs are bit-identical for 1,
+//    2 or more threads. The slabs (a fixed number for a given N, about 4096 balls each or
+//    more, at most 128) decide the order the contacts are resolved in.
 // 4. Every 32 substeps the arrays are permuted into the grid's cell order, so that
 //    neighbours are near in memory; id_ maps the engine's order back to the caller's.
 #include "many_balls_physical.h"
@@ -40,12 +42,14 @@ namespace {
 
 constexpr ManyBallsEngine::Pass kPasses[] = {ManyBallsEngine::Pass::Contact, ManyBallsEngine::Pass::Support,
                                              ManyBallsEngine::Pass::Contact, ManyBallsEngine::Pass::Contact};
-constexpr double kTouching = 1.0 + 1e-6; // centres this close, relative to 2r, touch
-constexpr int kMaxSlabs = 128;
-constexpr std::size_t kSharedContacts =
-    8192; // fewer contacts are resolved on one thread           // slabs of the grid: threads share these out
-constexpr int kReorderEvery = 32;   // substeps between re-orderings by cell
-constexpr double kMaxTravel = 0.25; // of r per substep
+constexpr double kTouching = 1.0 + 1e-6;      // centres this close, relative to 2r, touch
+constexpr int kMaxSlabs = 128;                // slabs of the grid: threads share these out
+constexpr int kSlabBalls = 4096;              // about this many balls a slab at least
+constexpr std::size_t kSharedContacts = 8192; // fewer contacts are resolved on one thread
+constexpr int kAllPairsChunks = 64;           // the all-pairs search is shared out in this many row ranges
+constexpr int kBlock = broadphase::UniformGrid::kBlockSize; // balls a worker flies (and re-orders) at a time
+constexpr int kReorderEvery = 32;                           // substeps between re-orderings by cell
+constexpr double kMaxTravel = 0.25;                         // of r per substep
 constexpr int kMaxSubsteps = 1024;
 constexpr int kMaxWallEvents = 8; // located wall impacts of one ball in one substep
 constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -205,16 +209,6 @@ double flyRange(double* x, double* y, double* z, double* vx, double* vy, double*
     return maxSpeed2;
 }
 
-// Which of `count` items worker w of `workers` takes: [first, last).
-struct Share {
-    int first, last;
-};
-Share share(int count, int w, int workers)
-{
-    return {static_cast<int>(static_cast<long long>(count) * w / workers),
-            static_cast<int>(static_cast<long long>(count) * (w + 1) / workers)};
-}
-
 int latticeSide(int n)
 {
     int k = static_cast<int>(std::cbrt(static_cast<double>(n)));
@@ -313,11 +307,14 @@ ManyBallsEngine::ManyBallsEngine(const ManyBallsSettings& settings)
         const double side = std::max(hi_ - lo_, 2.0 * settings.radius);
         grid_.reset(broadphase::GridGeometry(lo_, side, 2.0 * settings.radius,
                                              std::max<std::size_t>(8 * static_cast<std::size_t>(n), 64)),
-                    n, workers, kMaxSlabs);
+                    n, std::clamp(n / kSlabBalls, 1, kMaxSlabs));
         pairs_.resize(static_cast<std::size_t>(grid_.slabCount()));
     } else {
-        pairs_.resize(static_cast<std::size_t>(workers));
+        pairs_.resize(static_cast<std::size_t>(std::clamp(n, 1, kAllPairsChunks)));
     }
+    // Room for about one contact a ball; lists that need more grow (doubling), once.
+    for (auto& list : pairs_)
+        list.reserve(static_cast<std::size_t>(n) / pairs_.size() + 64);
 }
 
 ManyBallsEngine::~ManyBallsEngine() = default;
@@ -376,10 +373,12 @@ void ManyBallsEngine::substep(double h)
     const auto n = static_cast<std::size_t>(settings_.n);
     const double* x = p_.data();
     std::fill(workerMaxSpeed2_.begin(), workerMaxSpeed2_.end(), 0.0);
-    pool_->run([&](int w) { fly(w, h); });
-    if (grid)
-        pool_->run([&](int w) { grid_.sortPart(w, x, x + n, x + 2 * n); });
-    pool_->run([&](int w) { findPairs(w); });
+    pool_->forEach((settings_.n + kBlock - 1) / kBlock, [&](int block, int w) { fly(block, w, h); });
+    if (grid) {
+        grid_.countSlabs();
+        pool_->forEach(grid_.slabCount(), [&](int slab, int) { grid_.sortSlab(slab, x, x + n, x + 2 * n); });
+    }
+    pool_->forEach(static_cast<int>(pairs_.size()), [&](int list, int) { findPairs(list); });
     std::size_t contacts = 0;
     for (const auto& list : pairs_)
         contacts += list.size();
@@ -391,7 +390,7 @@ void ManyBallsEngine::substep(double h)
             resolvePass(pass, shared);
     maxSpeed_ = std::sqrt(*std::max_element(workerMaxSpeed2_.begin(), workerMaxSpeed2_.end()));
     if (grid && substepsDone_ % kReorderEvery == 0) {
-        pool_->run([&](int w) { reorder(w); });
+        pool_->forEach((settings_.n + kBlock - 1) / kBlock, [&](int block, int) { reorder(block); });
         p_.swap(pSpare_);
         v_.swap(vSpare_);
         id_.swap(idSpare_);
@@ -400,26 +399,23 @@ void ManyBallsEngine::substep(double h)
     ++substepsDone_;
 }
 
-void ManyBallsEngine::fly(int worker, double h)
+void ManyBallsEngine::fly(int block, int worker, double h)
 {
     const auto n = static_cast<std::size_t>(settings_.n);
     double* x = p_.data();
     double* vx = v_.data();
     const Walls walls{lo_, hi_, settings_.wallRestitution, restSpeed_, settings_.g};
     const bool located = settings_.impacts == ImpactMode::Located;
-    const bool grid = settings_.broadphase == Broadphase::Grid;
-    // The grid's own split (whole blocks), so that each worker places its own balls.
-    const Share s =
-        grid ? Share{grid_.partBegin(worker), grid_.partBegin(worker + 1)} : share(settings_.n, worker, pool_->size());
+    const int begin = block * kBlock, end = std::min(settings_.n, begin + kBlock);
     double maxSpeed2 = 0.0;
     auto run = [&](auto integrator) {
         auto fly = [&](const auto& place) {
             maxSpeed2 =
                 flyRange<decltype(integrator)::value>(x, x + n, x + 2 * n, vx, vx + n, vx + 2 * n, rebounds_.data(),
-                                                      supported_.data(), s.first, s.last, h, walls, located, place);
+                                                      supported_.data(), begin, end, h, walls, located, place);
         };
-        if (grid)
-            fly(grid_.placer(worker));
+        if (settings_.broadphase == Broadphase::Grid)
+            fly(grid_.placer(block));
         else
             fly([](int, double, double, double) {});
     };
@@ -439,28 +435,24 @@ void ManyBallsEngine::fly(int worker, double h)
     default:
         throw std::logic_error("many-balls: integrator refused at build time");
     }
-    workerMaxSpeed2_[static_cast<std::size_t>(worker)] = maxSpeed2;
+    double& slot = workerMaxSpeed2_[static_cast<std::size_t>(worker)];
+    slot = std::max(slot, maxSpeed2);
 }
 
-void ManyBallsEngine::findPairs(int worker)
+void ManyBallsEngine::findPairs(int list)
 {
     const auto n = static_cast<std::size_t>(settings_.n);
     const double* x = p_.data();
     const double contact2 = 4.0 * settings_.radius * settings_.radius; // (2 r)^2
+    auto& out = pairs_[static_cast<std::size_t>(list)];
+    out.clear();
     if (settings_.broadphase == Broadphase::Grid) {
-        for (int slab = grid_.slabShare(worker); slab < grid_.slabShare(worker + 1); ++slab) {
-            auto& list = pairs_[static_cast<std::size_t>(slab)];
-            list.clear();
-            grid_.findPairs(slab, x, x + n, x + 2 * n, contact2, list);
-        }
+        grid_.findPairs(list, x, x + n, x + 2 * n, contact2, out); // one list per slab
         return;
     }
-    auto& list = pairs_[static_cast<std::size_t>(worker)];
-    list.clear();
-    const int workers = pool_->size();
-    broadphase::findAllPairs(x, x + n, x + 2 * n, settings_.n,
-                             broadphase::allPairsRowBegin(settings_.n, worker, workers),
-                             broadphase::allPairsRowBegin(settings_.n, worker + 1, workers), contact2, list);
+    const int chunks = static_cast<int>(pairs_.size());
+    broadphase::findAllPairs(x, x + n, x + 2 * n, settings_.n, broadphase::allPairsRowBegin(settings_.n, list, chunks),
+                             broadphase::allPairsRowBegin(settings_.n, list + 1, chunks), contact2, out);
 }
 
 void ManyBallsEngine::resolvePass(Pass pass, bool shared)
@@ -474,15 +466,16 @@ void ManyBallsEngine::resolvePass(Pass pass, bool shared)
     }
     const int slabs = grid_.slabCount();
     for (int parity = 0; parity < 2; ++parity) {
-        auto resolveShare = [&](int w, int workers) {
-            const Share s = share((slabs - parity + 1) / 2, w, workers);
-            for (int j = s.first; j < s.last; ++j)
-                resolveList(pairs_[static_cast<std::size_t>(parity + 2 * j)], pass, w);
+        const int count = (slabs - parity + 1) / 2; // slabs parity, parity + 2, ...
+        const auto resolve = [&](int j, int w) {
+            resolveList(pairs_[static_cast<std::size_t>(parity + 2 * j)], pass, w);
         };
-        if (shared)
-            pool_->run([&](int w) { resolveShare(w, pool_->size()); });
-        else
-            resolveShare(0, 1);
+        if (shared) {
+            pool_->forEach(count, resolve);
+        } else {
+            for (int j = 0; j < count; ++j)
+                resolve(j, 0);
+        }
     }
 }
 
@@ -561,12 +554,12 @@ void ManyBallsEngine::resolveList(const std::vector<Pair>& pairs, Pass pass, int
     }
 }
 
-void ManyBallsEngine::reorder(int worker)
+void ManyBallsEngine::reorder(int block)
 {
     const auto n = static_cast<std::size_t>(settings_.n);
     const std::uint32_t* order = grid_.order().data();
-    const Share s = share(settings_.n, worker, pool_->size());
-    for (int q = s.first; q < s.last; ++q) {
+    const int begin = block * kBlock, end = std::min(settings_.n, begin + kBlock);
+    for (int q = begin; q < end; ++q) {
         const std::size_t i = order[q];
         for (std::size_t a = 0; a < 3; ++a) {
             pSpare_.data()[a * n + static_cast<std::size_t>(q)] = p_.data()[a * n + i];

@@ -68,11 +68,11 @@ public:
 
 private:
     void substep(double h);
-    void fly(int worker, double h);
-    void findPairs(int worker);
+    void fly(int block, int worker, double h);
+    void findPairs(int list);
     void resolvePass(Pass pass, bool shared);
     void resolveList(const std::vector<broadphase::Pair>& pairs, Pass pass, int worker);
-    void reorder(int worker);
+    void reorder(int block);
     int substepsFor(double dt) const;
 
     ManyBallsSettings settings_;
@@ -85,7 +85,7 @@ private:
     std::vector<int> rebounds_, reboundsSpare_;
     std::vector<std::uint8_t> supported_; // resting on the floor, or on a supported ball (set each substep)
     broadphase::UniformGrid grid_;
-    std::vector<std::vector<broadphase::Pair>> pairs_; // per slab (grid) or per worker (all pairs)
+    std::vector<std::vector<broadphase::Pair>> pairs_; // per slab (grid) or per range of rows (all pairs)
     std::vector<double> workerMaxSpeed2_;              // largest squared speed each worker saw this substep
     double maxSpeed_ = 0.0;
     long long substepsDone_ = 0;

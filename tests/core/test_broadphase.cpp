@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The broadphase: the counting-sort grid finds exactly the pairs the all-pairs test finds
 // (random scenes, centres on cell boundaries, on and beyond the walls, huge boxes, any
-// number of workers), its sort is stable and the same for any number of workers, and the
+// number of slabs), its sort is stable and the same for any number of slabs, and the
 // report's linked cells find the same lowest-index ball as a scan of every ball.
 #include "core/broadphase/cell_list.h"
 #include "core/broadphase/uniform_grid.h"
@@ -47,12 +47,12 @@ PairSet allPairs(const Scene& s)
     return normalised(out);
 }
 
-PairSet gridPairs(const Scene& s, int parts, int maxSlabs, std::size_t maxCells = 1u << 22)
+PairSet gridPairs(const Scene& s, int maxSlabs, std::size_t maxCells = 1u << 22)
 {
     const int n = static_cast<int>(s.p.cols());
     const double* x = s.p.data();
     UniformGrid grid;
-    grid.reset(GridGeometry(s.lo, s.side, s.reach, maxCells), n, parts, maxSlabs);
+    grid.reset(GridGeometry(s.lo, s.side, s.reach, maxCells), n, maxSlabs);
     grid.build(x, x + n, x + 2 * n);
     std::vector<Pair> out;
     for (int slab = 0; slab < grid.slabCount(); ++slab)
@@ -127,18 +127,19 @@ private slots:
         QTest::addColumn<double>("side");
         QTest::addColumn<double>("reach");
         QTest::addColumn<double>("spill");
-        QTest::addColumn<int>("parts");
         QTest::addColumn<int>("maxSlabs");
         QTest::addColumn<int>("maxCells");
         // Dense enough that most balls have several partners, so windows overflow 4 places.
-        QTest::newRow("dense, one worker") << 3000 << 30.0 << 2.0 << 0.0 << 1 << 128 << (1 << 22);
-        QTest::newRow("dense, three workers, five slabs") << 3000 << 30.0 << 2.0 << 0.0 << 3 << 5 << (1 << 22);
-        QTest::newRow("sparse, ten percent") << 4000 << 75.0 << 2.0 << 0.0 << 2 << 128 << (1 << 22);
-        QTest::newRow("centres beyond the walls") << 2000 << 30.0 << 2.0 << 6.0 << 2 << 7 << (1 << 22);
-        QTest::newRow("cells capped wider than reach") << 2000 << 40.0 << 2.0 << 0.0 << 2 << 128 << 64;
-        QTest::newRow("one cell") << 300 << 3.0 << 2.0 << 1.0 << 1 << 128 << (1 << 22);
+        QTest::newRow("dense") << 3000 << 30.0 << 2.0 << 0.0 << 128 << (1 << 22);
+        QTest::newRow("dense, five slabs") << 3000 << 30.0 << 2.0 << 0.0 << 5 << (1 << 22);
+        QTest::newRow("dense, one slab") << 3000 << 30.0 << 2.0 << 0.0 << 1 << (1 << 22);
+        // Several thousand balls: several blocks in the first stage.
+        QTest::newRow("sparse, ten percent") << 9000 << 72.0 << 2.0 << 0.0 << 128 << (1 << 22);
+        QTest::newRow("centres beyond the walls") << 2000 << 30.0 << 2.0 << 6.0 << 7 << (1 << 22);
+        QTest::newRow("cells capped wider than reach") << 2000 << 40.0 << 2.0 << 0.0 << 128 << 64;
+        QTest::newRow("one cell") << 300 << 3.0 << 2.0 << 1.0 << 128 << (1 << 22);
         // Coordinates near 1e6: the float pre-test's margin must still keep every pair.
-        QTest::newRow("huge box") << 2000 << 2.0e6 << 1.5e5 << 0.0 << 2 << 128 << (1 << 22);
+        QTest::newRow("huge box") << 2000 << 2.0e6 << 1.5e5 << 0.0 << 128 << (1 << 22);
     }
     void gridFindsExactlyTheAllPairsPairs()
     {
@@ -146,14 +147,13 @@ private slots:
         QFETCH(double, side);
         QFETCH(double, reach);
         QFETCH(double, spill);
-        QFETCH(int, parts);
         QFETCH(int, maxSlabs);
         QFETCH(int, maxCells);
         for (std::uint64_t seed : {1u, 2u, 3u}) {
             const Scene s = randomScene(n, side, reach, seed, spill);
             const PairSet expected = allPairs(s);
             QVERIFY(expected.size() > static_cast<std::size_t>(n) / 20); // the scene has pairs to find
-            QVERIFY(gridPairs(s, parts, maxSlabs, static_cast<std::size_t>(maxCells)) == expected);
+            QVERIFY(gridPairs(s, maxSlabs, static_cast<std::size_t>(maxCells)) == expected);
         }
     }
 
@@ -162,8 +162,8 @@ private slots:
         const Scene s = boundaryScene();
         QCOMPARE(GridGeometry(s.lo, s.side, s.reach, 1u << 20).cellSide(), 2.0625);
         const PairSet expected = allPairs(s);
-        for (int parts : {1, 2, 4})
-            QVERIFY(gridPairs(s, parts, 128) == expected);
+        for (int slabs : {1, 3, 128})
+            QVERIFY(gridPairs(s, slabs) == expected);
         // Exactly `reach` apart is not a pair (strict test); a hair closer is.
         for (std::uint32_t c = 0; c + 2 < static_cast<std::uint32_t>(s.p.cols()); c += 3) {
             QCOMPARE((s.p.col(c) - s.p.col(c + 1)).norm(), s.reach);
@@ -172,14 +172,14 @@ private slots:
         }
     }
 
-    void sortIsStableAndTheSameForAnyNumberOfWorkers()
+    void sortIsStableAndTheSameForAnyNumberOfSlabs()
     {
-        const Scene s = randomScene(5000, 40.0, 2.0, 17, 3.0);
-        const int n = 5000;
+        const Scene s = randomScene(9000, 40.0, 2.0, 17, 3.0);
+        const int n = 9000;
         const double* x = s.p.data();
         const GridGeometry geo(s.lo, s.side, s.reach, 1u << 22);
         UniformGrid one;
-        one.reset(geo, n, 1, 128);
+        one.reset(geo, n, 128);
         one.build(x, x + n, x + 2 * n);
         // Every ball once; cells in increasing order; within a cell, increasing index.
         std::vector<std::uint32_t> sorted = one.order();
@@ -196,9 +196,9 @@ private slots:
                     QVERIFY(one.order()[q - 1] < b);
             }
         }
-        for (int parts : {2, 3, 7}) {
+        for (int slabs : {1, 2, 11}) {
             UniformGrid many;
-            many.reset(geo, n, parts, 11);
+            many.reset(geo, n, slabs);
             many.build(x, x + n, x + 2 * n);
             QVERIFY(many.order() == one.order());
             QVERIFY(many.cellStart() == one.cellStart());
@@ -213,7 +213,7 @@ private slots:
         const int n = 4000;
         const double* x = s.p.data();
         UniformGrid grid;
-        grid.reset(GridGeometry(s.lo, s.side, s.reach, 1u << 22), n, 1, 6);
+        grid.reset(GridGeometry(s.lo, s.side, s.reach, 1u << 22), n, 6);
         grid.build(x, x + n, x + 2 * n);
         for (int parity = 0; parity < 2; ++parity) {
             std::vector<int> owner(static_cast<std::size_t>(n), -1);
