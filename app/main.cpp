@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 // amazeballs: the window.
-// `amazeballs [--scene KEY] [--set NAME=VALUE]... [--speed X] [--play] [--measure-frames S]`.
+// `amazeballs [FILE.json] [--preset NAME|FILE] [--scene KEY] [--set NAME=VALUE]... [--speed X]
+//  [--play] [--measure-frames S] [--fresh]`.
 #include "ui/main_window.h"
+#include "ui/presets/preset_actions.h"
+#include "ui/settings/window_settings.h"
 #include "ui/view/ball_view.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFile>
+#include <QIcon>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -94,6 +99,9 @@ int main(int argc, char** argv)
 
     QApplication app(argc, argv);
     QApplication::setApplicationName("Amazeballs");
+    QApplication::setOrganizationName("Amazeballs");
+    QApplication::setDesktopFileName("amazeballs");
+    QApplication::setWindowIcon(QIcon(":/icons/amazeballs.svg"));
     QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
 
     QCommandLineParser parser;
@@ -108,11 +116,36 @@ int main(int argc, char** argv)
         "speed", QApplication::translate("main", "Play at X times real time (0.1 to 10)."), "X");
     const QCommandLineOption measureOption(
         "measure-frames", QApplication::translate("main", "Play for S seconds, print frame times, quit."), "S");
-    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption});
+    const QCommandLineOption presetOption(
+        "preset", QApplication::translate("main", "Open a built-in preset by NAME, or a preset FILE."), "NAME|FILE");
+    const QCommandLineOption freshOption(
+        "fresh", QApplication::translate("main", "Start as on a first start: neither read nor write the remembered "
+                                                 "window, stage and settings."));
+    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption, presetOption, freshOption});
+    parser.addPositionalArgument("FILE.json", QApplication::translate("main", "A preset file to open."), "[FILE.json]");
     parser.process(app);
 
     ab::ui::MainWindow window;
+    QSettings store;
+    ab::ui::WindowSettings* settings = nullptr;
+    bool placed = false;
+    if (!parser.isSet(freshOption)) {
+        settings = new ab::ui::WindowSettings(window, store); // owned by the window
+        placed = settings->restore();
+        for (const QString& skipped : settings->skipped())
+            std::fprintf(stderr, "amazeballs: a remembered setup was skipped: %s\n", qPrintable(skipped));
+        QObject::connect(&app, &QCoreApplication::aboutToQuit, settings, &ab::ui::WindowSettings::save);
+    }
     try {
+        const QStringList files = parser.positionalArguments();
+        if (files.size() > 1 || (files.size() == 1 && parser.isSet(presetOption)))
+            throw ab::InputError("give one preset: a FILE.json or --preset NAME|FILE");
+        if (!files.isEmpty() || parser.isSet(presetOption)) {
+            if (parser.isSet(sceneOption))
+                throw ab::InputError("--scene: a preset names its own stage; give one or the other");
+            const QString preset = files.isEmpty() ? parser.value(presetOption) : files.front();
+            ab::ui::applyPresetToWindow(window, ab::loadPreset(preset.toStdString()));
+        }
         if (parser.isSet(sceneOption)) {
             const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
             if (!scene)
@@ -136,7 +169,8 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "amazeballs: %s\n", e.what());
         return 2;
     }
-    window.resize(1400, 900);
+    if (!placed)
+        window.resize(1400, 900);
     window.show();
     if (parser.isSet(measureOption))
         measureFrames(window, std::max(1.0, parser.value(measureOption).toDouble()));

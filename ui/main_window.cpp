@@ -2,11 +2,14 @@
 #include "main_window.h"
 
 #include "charts/chart_export.h"
+#include "about_box.h"
 #include "export_files.h"
+#include "figures/figure_actions.h"
 #include "panels/parameter_panel.h"
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
+#include "presets/preset_actions.h"
 #include "view/ball_view.h"
 
 #include <QApplication>
@@ -153,6 +156,8 @@ QWidget* MainWindow::buildViewArea()
 void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    presets_ = new PresetActions(this);
+    presets_->addFileActions(file);
     file->addAction(tr("Export current chart..."), QKeySequence(tr("Ctrl+E")), this,
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Png); });
     QMenu* charts = file->addMenu(tr("Export chart"));
@@ -195,6 +200,11 @@ void MainWindow::buildMenus()
     turn->setCheckable(true);
     reset->setEnabled(view_ != nullptr);
     turn->setEnabled(view_ != nullptr);
+    presets_->addChartToggles(view);
+
+    presets_->addPresetsMenu(menuBar());
+    figures_ = new FigureActions(this);
+    figures_->addFiguresMenu(menuBar());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("Keys and mouse"), QKeySequence::HelpContents, this, &MainWindow::showKeys);
@@ -234,7 +244,23 @@ void MainWindow::showScene(SceneId scene)
         navigator_->setCurrent(scene_); // stay on the stage that runs
         return;
     }
+    showPanels(scene);
+}
+
+std::optional<QString> MainWindow::showSetup(const RunSpec& spec, const RunOptions& options)
+{
+    const Setup candidate{spec, options};
+    if (auto error = startRun(candidate))
+        return error;
+    setups_.insert_or_assign(spec.scene, candidate);
+    showPanels(spec.scene);
+    return std::nullopt;
+}
+
+void MainWindow::showPanels(SceneId scene)
+{
     scene_ = scene;
+    const Setup& setup = setupFor(scene);
     const SceneInfo& info = sceneInfo(scene);
     navigator_->setCurrent(scene);
     parameters_->setScene(info, setup.spec.model, setup.spec.params);
@@ -498,11 +524,7 @@ void MainWindow::showKeys()
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(this, tr("About Amazeballs"),
-                       tr("<b>Amazeballs</b> %1<br>Bouncing and colliding balls: the 2014 student report "
-                          "\"Amazeballs\" (Link\u00f6ping University, TNM085) rebuilt as a teaching tool, "
-                          "stage by stage.")
-                           .arg(QCoreApplication::applicationVersion()));
+    showAboutBox(this);
 }
 
 } // namespace ab::ui

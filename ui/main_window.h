@@ -29,6 +29,8 @@ class ParameterPanel;
 class StageNavigator;
 class StatusReadout;
 class TransportBar;
+class PresetActions;
+class FigureActions;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +44,9 @@ public:
     // core refuses them, and then nothing changes.
     bool applyValues(const ParamValues& values);
     bool applyOptions(const RunOptions& options);
+    // Shows `spec`'s stage with these options as its remembered setup (a preset). Returns
+    // the core's refusal (also shown), and then nothing changes.
+    std::optional<QString> showSetup(const RunSpec& spec, const RunOptions& options);
 
     // Exports; each throws InputError naming the path and the reason.
     void exportChartTo(ChartKind kind, const QString& path);
@@ -73,6 +78,8 @@ private:
     // Starts the run; on refusal shows the core's message and returns it.
     std::optional<QString> startRun(const Setup& setup);
     Setup& setupFor(SceneId scene);
+    // The stage's panels show its remembered setup, which runs.
+    void showPanels(SceneId scene);
     void runReplaced();
     void ballSelected(int ball);
     // The scene's closed form, drawn dashed beside the run where the core has one.
@@ -103,6 +110,8 @@ private:
     std::optional<SceneId> framedScene_;
     QString lastDirectory_;
     std::unique_ptr<reference::Reference> reference_;
+    PresetActions* presets_ = nullptr;
+    FigureActions* figures_ = nullptr;
 };
 
 } // namespace ab::ui

@@ -38,6 +38,10 @@ const std::array commands{
             stabilityCommand},
     Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
             studyCommand},
+    Command{"figure",
+            "figure 2.5|2.6|2.7|3.1     the report's figure redrawn from the report model, headless:\n"
+            "                            --out FILE.png|FILE.svg [--width W] [--height H]",
+            figureCommand},
 };
 
 void usage(std::ostream& out)

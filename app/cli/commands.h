@@ -14,5 +14,6 @@ int stabilityCommand(Args& args, std::ostream& out, std::ostream& err);
 int studyCommand(Args& args, std::ostream& out, std::ostream& err);
 int chartCommand(Args& args, std::ostream& out, std::ostream& err);
 int benchCommand(Args& args, std::ostream& out, std::ostream& err);
+int figureCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

@@ -149,6 +149,14 @@ void BallView::frameScene()
     framePending_ = false;
 }
 
+void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance)
+{
+    camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length());
+    framePending_ = false;
+    cameraMoved_ = true;
+    update();
+}
+
 void BallView::turn(float yawDegrees)
 {
     camera_.turn(yawDegrees);

@@ -46,6 +46,8 @@ public:
     void resetView();
     // Turns the camera about the vertical through the target (the window's turntable).
     void turn(float yawDegrees);
+    // Places the camera (a preset's view); it then stays until the user moves it.
+    void setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance);
 
     const OrbitCamera& camera() const { return camera_; }
     int selected() const { return selected_; }

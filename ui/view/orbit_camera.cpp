@@ -51,6 +51,15 @@ void OrbitCamera::zoom(float wheelSteps)
     distance_ = std::clamp(distance_ * std::pow(0.85f, wheelSteps), size_ * 1e-3f, size_ * 50.0f);
 }
 
+void OrbitCamera::setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize)
+{
+    size_ = std::max(sceneSize, 1e-6f);
+    target_ = target;
+    yaw_ = std::fmod(yawDeg, 360.0f);
+    pitch_ = std::clamp(pitchDeg, -89.0f, 89.0f);
+    distance_ = std::clamp(distance, size_ * 1e-3f, size_ * 50.0f);
+}
+
 void OrbitCamera::moveEye(const QVector3D& delta)
 {
     setEye(eye() + delta);

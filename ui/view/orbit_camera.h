@@ -26,6 +26,9 @@ public:
     void zoom(float wheelSteps);
     // Moves the eye by `delta` in world coordinates and keeps looking at the target.
     void moveEye(const QVector3D& delta);
+    // Puts the camera at a saved pose (a preset's); pitch is kept within +-89 degrees as
+    // orbit() keeps it, distance within the zoom's limits for a scene of size `sceneSize`.
+    void setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize);
 
     QVector3D eye() const;
     QVector3D target() const { return target_; }

@@ -1,0 +1,39 @@
+# SPDX-License-Identifier: MIT
+# Installs the build into a fresh prefix and checks what a Linux desktop needs: the
+# programs in bin, the .desktop entry whose Exec and Icon name them, and the icon in the
+# hicolor theme. Run as: cmake -DBUILD_DIR=... -DPREFIX=... [-DVALIDATE=...] -P check_install.cmake
+file(REMOVE_RECURSE "${PREFIX}")
+execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${PREFIX}"
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${rc})")
+endif()
+
+set(desktop "${PREFIX}/share/applications/amazeballs.desktop")
+set(icon "${PREFIX}/share/icons/hicolor/scalable/apps/amazeballs.svg")
+foreach(f "${PREFIX}/bin/amazeballs" "${PREFIX}/bin/amazeballs-cli" "${desktop}" "${icon}")
+  if(NOT EXISTS "${f}")
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
+
+file(STRINGS "${desktop}" exec REGEX "^Exec=")
+file(STRINGS "${desktop}" iconKey REGEX "^Icon=")
+if(NOT exec MATCHES "^Exec=amazeballs( |$)")
+  message(FATAL_ERROR "the .desktop entry runs '${exec}', not the installed amazeballs")
+endif()
+if(NOT iconKey STREQUAL "Icon=amazeballs")
+  message(FATAL_ERROR "the .desktop entry names '${iconKey}', not the installed icon amazeballs.svg")
+endif()
+file(READ "${icon}" svg)
+if(NOT svg MATCHES "<svg")
+  message(FATAL_ERROR "the installed icon is not an SVG image")
+endif()
+
+if(VALIDATE)
+  execute_process(COMMAND "${VALIDATE}" "${desktop}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT rc EQUAL 0 OR out MATCHES "error")
+    message(FATAL_ERROR "desktop-file-validate: ${out}")
+  endif()
+endif()
+message(STATUS "installed: programs, desktop entry and icon in ${PREFIX}")
