@@ -7,6 +7,8 @@
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
+#include "tools/background_job.h"
+#include "tools/tools_menu.h"
 #include "view/ball_view.h"
 
 #include <QApplication>
@@ -195,6 +197,8 @@ void MainWindow::buildMenus()
     turn->setCheckable(true);
     reset->setEnabled(view_ != nullptr);
     turn->setEnabled(view_ != nullptr);
+
+    addToolsMenu(this, [this] { return controller_.spec(); });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("Keys and mouse"), QKeySequence::HelpContents, this, &MainWindow::showKeys);
@@ -415,7 +419,9 @@ void MainWindow::exportDataTo(const QString& path)
     const int ball = controller_.selectedBall();
     MotionTrack copy;
     controller_.engine().read([&](const Recording& rec, const Frame&) { copy = rec.track(); });
-    saveMotionCsv(copy, axes, ball, path);
+    // A long run's CSV takes seconds: written on a worker, with progress and Cancel.
+    runWithProgress(this, tr("Writing %1").arg(QFileInfo(path).fileName()),
+                    [&](const ProgressFn& progress) { saveMotionCsv(copy, axes, ball, path, progress); });
 }
 
 void MainWindow::exportViewTo(const QString& path)
@@ -457,6 +463,8 @@ void MainWindow::exportInteractively(ChartKind kind, ExportFormat format)
         else
             exportChartTo(kind, path);
         statusBar()->showMessage(tr("Wrote %1").arg(path), 5000);
+    } catch (const ExportCancelled&) {
+        statusBar()->showMessage(tr("Export cancelled: nothing written"), 5000);
     } catch (const InputError& e) {
         QMessageBox::warning(this, tr("Export failed"), QString::fromUtf8(e.what()));
     }
