@@ -9,6 +9,8 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <streambuf>
+
 namespace ab::ui {
 
 void saveImageAtomically(const QImage& image, const QString& path)
@@ -27,9 +29,61 @@ void saveImageAtomically(const QImage& image, const QString& path)
         throw InputError(path.toStdString() + ": write failed (" + file.errorString().toStdString() + ")");
 }
 
-void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path)
+namespace {
+
+// Passes characters through to `target`, counting lines; every `every` lines it tells
+// `progress`, and throws ExportCancelled when told to stop (writeFileAtomically then
+// removes its temporary file).
+class LineCounter : public std::streambuf {
+public:
+    LineCounter(std::streambuf* target, std::size_t total, const ExportProgress& progress)
+        : target_(target), total_(total), progress_(progress)
+    {
+    }
+
+protected:
+    int_type overflow(int_type c) override
+    {
+        if (traits_type::eq_int_type(c, traits_type::eof()))
+            return traits_type::not_eof(c);
+        if (traits_type::to_char_type(c) == '\n' && ++lines_ % every == 0 && !progress_(lines_, total_))
+            throw ExportCancelled();
+        return target_->sputc(traits_type::to_char_type(c));
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override
+    {
+        for (std::streamsize i = 0; i < n; ++i)
+            if (s[i] == '\n' && ++lines_ % every == 0 && !progress_(lines_, total_))
+                throw ExportCancelled();
+        return target_->sputn(s, n);
+    }
+    int sync() override { return target_->pubsync(); }
+
+private:
+    static constexpr std::size_t every = 4096;
+    std::streambuf* target_;
+    std::size_t total_;
+    const ExportProgress& progress_;
+    std::size_t lines_ = 0;
+};
+
+} // namespace
+
+void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path, const ExportProgress& progress)
 {
-    writeFileAtomically(path.toStdString(), [&](std::ostream& out) { writeMotionCsv(out, track, axes, ball); });
+    writeFileAtomically(path.toStdString(), [&](std::ostream& out) {
+        if (!progress) {
+            writeMotionCsv(out, track, axes, ball);
+            return;
+        }
+        LineCounter counter(out.rdbuf(), track.size() + 1, progress); // the header and one line a sample
+        std::ostream counted(&counter);
+        counted.exceptions(std::ios::badbit);
+        writeMotionCsv(counted, track, axes, ball);
+        counted.flush();
+        if (!progress(track.size() + 1, track.size() + 1))
+            throw ExportCancelled();
+    });
 }
 
 } // namespace ab::ui

@@ -7,6 +7,10 @@
 #include <QImage>
 #include <QString>
 
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+
 namespace ab::ui {
 
 class MotionTrack;
@@ -14,7 +18,17 @@ class MotionTrack;
 // Saves `image` as PNG; throws InputError naming the path and the reason.
 void saveImageAtomically(const QImage& image, const QString& path);
 
-// Writes the track as CSV (writeMotionCsv); throws InputError.
-void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path);
+// Thrown when an export is cancelled; the target is then untouched.
+struct ExportCancelled : std::runtime_error {
+    ExportCancelled() : std::runtime_error("export cancelled") {}
+};
+
+// Told (rows written, rows in all) every few thousand rows; returns false to cancel.
+using ExportProgress = std::function<bool(std::size_t done, std::size_t total)>;
+
+// Writes the track as CSV (writeMotionCsv); throws InputError, or ExportCancelled when
+// `progress` says stop (the file is then not written).
+void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path,
+                   const ExportProgress& progress = {});
 
 } // namespace ab::ui

@@ -10,6 +10,8 @@
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
 #include "presets/preset_actions.h"
+#include "tools/background_job.h"
+#include "tools/tools_menu.h"
 #include "view/ball_view.h"
 
 #include <QApplication>
@@ -205,6 +207,8 @@ void MainWindow::buildMenus()
     presets_->addPresetsMenu(menuBar());
     figures_ = new FigureActions(this);
     figures_->addFiguresMenu(menuBar());
+
+    addToolsMenu(this, [this] { return controller_.spec(); });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("Keys and mouse"), QKeySequence::HelpContents, this, &MainWindow::showKeys);
@@ -441,7 +445,9 @@ void MainWindow::exportDataTo(const QString& path)
     const int ball = controller_.selectedBall();
     MotionTrack copy;
     controller_.engine().read([&](const Recording& rec, const Frame&) { copy = rec.track(); });
-    saveMotionCsv(copy, axes, ball, path);
+    // A long run's CSV takes seconds: written on a worker, with progress and Cancel.
+    runWithProgress(this, tr("Writing %1").arg(QFileInfo(path).fileName()),
+                    [&](const ProgressFn& progress) { saveMotionCsv(copy, axes, ball, path, progress); });
 }
 
 void MainWindow::exportViewTo(const QString& path)
@@ -483,6 +489,8 @@ void MainWindow::exportInteractively(ChartKind kind, ExportFormat format)
         else
             exportChartTo(kind, path);
         statusBar()->showMessage(tr("Wrote %1").arg(path), 5000);
+    } catch (const ExportCancelled&) {
+        statusBar()->showMessage(tr("Export cancelled: nothing written"), 5000);
     } catch (const InputError& e) {
         QMessageBox::warning(this, tr("Export failed"), QString::fromUtf8(e.what()));
     }

@@ -120,6 +120,40 @@ RowResult runRow(const CaseRow& row, const std::function<bool()>& cancelled)
     return r;
 }
 
+std::vector<CaseRow> suiteRows(const std::vector<const StabilityCase*>& cases)
+{
+    std::vector<CaseRow> rows;
+    auto add = [&](const StabilityCase& c) {
+        for (CaseRow& row : c.rows())
+            rows.push_back(std::move(row));
+    };
+    if (cases.empty())
+        for (const StabilityCase& c : stabilityCases())
+            add(c);
+    for (const StabilityCase* c : cases)
+        add(*c);
+    return rows;
+}
+
+SuiteResult runSuite(const std::vector<CaseRow>& rows,
+                     const std::function<void(std::size_t, std::size_t, const RowResult&)>& progress,
+                     const std::function<bool()>& cancelled)
+{
+    SuiteResult result;
+    for (const CaseRow& row : rows) {
+        if (cancelled && cancelled())
+            return result;
+        RowResult r = runRow(row, cancelled);
+        if (cancelled && cancelled())
+            return result; // the row may have stopped part way: its figures would mislead
+        result.rows.push_back(std::move(r));
+        if (progress)
+            progress(result.rows.size(), rows.size(), result.rows.back());
+    }
+    result.complete = true;
+    return result;
+}
+
 namespace {
 
 std::string figure(double x)

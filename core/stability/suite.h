@@ -80,6 +80,22 @@ const StabilityCase* findCase(const std::string& name);
 // Runs one row; `cancelled` is polled between steps (a cancelled row stops where it is).
 RowResult runRow(const CaseRow& row, const std::function<bool()>& cancelled = {});
 
+// The rows of the given cases, in order (every case when `cases` is empty).
+std::vector<CaseRow> suiteRows(const std::vector<const StabilityCase*>& cases = {});
+
+struct SuiteResult {
+    std::vector<RowResult> rows; // the rows that ran to their end, in order
+    bool complete = false;       // false when cancelled part way
+};
+
+// Runs the rows in order. `progress` (optional) is told after each row; `cancelled`
+// (optional) is polled between rows and between steps. A cancelled suite returns the rows
+// finished before it (the row it stopped in is dropped) with complete = false.
+SuiteResult
+runSuite(const std::vector<CaseRow>& rows,
+         const std::function<void(std::size_t done, std::size_t total, const RowResult& row)>& progress = {},
+         const std::function<bool()>& cancelled = {});
+
 // CSV per the contract: case,model,integrator,max_energy_gain,max_penetration,escaped,
 // nonfinite,verdict, then momentum_error,max_overlap,reference_error,steps,cpu_seconds,
 // dt,setting,note. Rows that did not run (not available, skipped) are not CSV rows: a

@@ -143,6 +143,57 @@ private slots:
         QVERIFY(text.find("not available") == std::string::npos); // only runs are CSV rows
     }
 
+    void suiteRunsEveryRowInOrderAndCountsToTheTotal()
+    {
+        // The suite of one case gives the same rows, with the same figures, as running
+        // the case row by row (runRow is deterministic), and progress counts 1..total.
+        const std::vector<CaseRow> rows = suiteRows({findCase("plastic")});
+        const std::vector<RowResult> direct = runCase("plastic");
+        std::vector<std::size_t> seen;
+        const SuiteResult suite = runSuite(rows, [&](std::size_t done, std::size_t total, const RowResult&) {
+            QCOMPARE(total, rows.size());
+            seen.push_back(done);
+        });
+        QVERIFY(suite.complete);
+        QCOMPARE(suite.rows.size(), direct.size());
+        QCOMPARE(seen.size(), rows.size());
+        for (std::size_t i = 0; i < seen.size(); ++i)
+            QCOMPARE(seen[i], i + 1);
+        for (std::size_t i = 0; i < direct.size(); ++i) {
+            QCOMPARE(suite.rows[i].setting, direct[i].setting);
+            QCOMPARE(suite.rows[i].verdict, direct[i].verdict);
+            QCOMPARE(suite.rows[i].figures.maxPenetration, direct[i].figures.maxPenetration);
+        }
+        std::size_t all = 0;
+        for (const StabilityCase& c : stabilityCases())
+            all += c.rows().size();
+        QCOMPARE(suiteRows().size(), all);
+    }
+
+    void cancellingTheSuiteKeepsTheFinishedRowsOnly()
+    {
+        // Cancelled after the second row is told: two rows, marked incomplete.
+        const std::vector<CaseRow> rows = suiteRows({findCase("coarse-step")});
+        QVERIFY(rows.size() > 2);
+        std::size_t told = 0;
+        const SuiteResult suite = runSuite(
+            rows, [&](std::size_t done, std::size_t, const RowResult&) { told = done; }, [&] { return told >= 2; });
+        QVERIFY(!suite.complete);
+        QCOMPARE(suite.rows.size(), std::size_t(2));
+        QCOMPARE(suite.rows[1].setting, runRow(rows[1]).setting);
+    }
+
+    void aRowCancelledPartWayIsDropped()
+    {
+        // Cancelled between steps of the first row: that row's figures cover part of the
+        // run only, so the suite returns none.
+        const std::vector<CaseRow> rows = suiteRows({findCase("coarse-step")});
+        int polls = 0;
+        const SuiteResult suite = runSuite(rows, {}, [&] { return ++polls > 3; });
+        QVERIFY(!suite.complete);
+        QVERIFY(suite.rows.empty());
+    }
+
     void markdownListsTheLimitsAndEveryRow()
     {
         std::ostringstream md;

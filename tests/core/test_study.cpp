@@ -140,6 +140,23 @@ private slots:
         QCOMPARE(r.rows.size(), std::size_t(2));
     }
 
+    void progressCountsEveryRowUpToTheTotal()
+    {
+        ab::study::Options o =
+            ab::study::defaultOptions(testing::spec(ab::SceneId::Bounce1d, {}, ab::ModelKind::Physical));
+        o.dts = {0.5, 0.25};
+        o.methods = {{ab::Integrator::Verlet, ab::ImpactMode::Located},
+                     {ab::Integrator::Event, ab::ImpactMode::Located}};
+        o.repeats = 1;
+        std::vector<std::size_t> seen;
+        const auto r = ab::study::runStudy(o, [&](std::size_t done, std::size_t total, const ab::study::Row&) {
+            QCOMPARE(total, std::size_t(4));
+            seen.push_back(done);
+        });
+        QVERIFY(r.complete);
+        QCOMPARE(seen, (std::vector<std::size_t>{1, 2, 3, 4}));
+    }
+
     void scenesWithoutAClosedFormAreRefused()
     {
         QVERIFY_THROWS_EXCEPTION(ab::InputError, ab::study::defaultOptions(testing::spec(ab::SceneId::Box3d, {"b=0.1"},
