@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
 // amazeballs: the window.
-// `amazeballs [--scene KEY] [--set NAME=VALUE]... [--speed X] [--play] [--measure-frames S]`.
+// `amazeballs [--scene KEY] [--set NAME=VALUE]... [--speed X] [--play] [--measure-frames S]
+//             [--lecture] [--theme KEY]`.
+#include "ui/i18n/language.h"
 #include "ui/main_window.h"
+#include "ui/shell/window_shell.h"
 #include "ui/view/ball_view.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFile>
+#include <QLocale>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -46,7 +50,8 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
     auto* samples = new std::vector<std::pair<double, double>>;
     ab::ui::BallView* view = window.view();
     if (!view) {
-        std::fprintf(stderr, "amazeballs: --measure-frames needs the 3D view (an OpenGL platform)\n");
+        std::fprintf(stderr, "amazeballs: %s\n",
+                     qPrintable(QApplication::translate("main", "--measure-frames needs the 3D view (an OpenGL platform)")));
         QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
         return;
     }
@@ -95,6 +100,7 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     QApplication::setApplicationName("Amazeballs");
     QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
+    ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system())); // the Language menu changes it
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Bouncing and colliding balls, stage by stage."));
@@ -108,15 +114,23 @@ int main(int argc, char** argv)
         "speed", QApplication::translate("main", "Play at X times real time (0.1 to 10)."), "X");
     const QCommandLineOption measureOption(
         "measure-frames", QApplication::translate("main", "Play for S seconds, print frame times, quit."), "S");
-    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption});
+    const QCommandLineOption lectureOption(
+        "lecture", QApplication::translate("main", "Open in lecture mode: full screen, large text, the step-by-step walk."));
+    const QCommandLineOption themeOption(
+        "theme", QApplication::translate("main", "Colours: light, dark, high-contrast-light or high-contrast-dark."),
+        "KEY");
+    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption, lectureOption, themeOption});
     parser.process(app);
 
-    ab::ui::MainWindow window;
+    ab::ui::WindowShell shell;
+    ab::ui::MainWindow& window = shell.window(); // replaced by a language switch: use only before it
     try {
         if (parser.isSet(sceneOption)) {
             const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
             if (!scene)
-                throw ab::InputError("--scene: unknown scene '" + parser.value(sceneOption).toStdString() + "'");
+                throw ab::InputError(QApplication::translate("main", "--scene: unknown scene '%1'")
+                                         .arg(parser.value(sceneOption))
+                                         .toStdString());
             window.showScene(scene->id);
         }
         if (!parser.values(setOption).isEmpty()) {
@@ -124,13 +138,25 @@ int main(int argc, char** argv)
             for (const QString& assignment : parser.values(setOption))
                 values.parseAssignment(assignment.toStdString());
             if (!window.applyValues(values))
-                throw ab::InputError("--set: the values were refused (see the window's status bar)");
+                throw ab::InputError(
+                    QApplication::translate("main", "--set: the values were refused (see the window's status bar)")
+                        .toStdString());
         }
         if (parser.isSet(speedOption)) {
             const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
             if (speed < 0.1 || speed > 10.0)
-                throw ab::InputError("--speed: " + ab::formatNumber(speed) + " is outside [0.1, 10]");
+                throw ab::InputError(QApplication::translate("main", "--speed: %1 is outside [0.1, 10]")
+                                         .arg(QString::fromStdString(ab::formatNumber(speed)))
+                                         .toStdString());
             window.controller().setSpeed(speed);
+        }
+        if (parser.isSet(themeOption)) {
+            const auto theme = ab::ui::parseTheme(parser.value(themeOption));
+            if (!theme)
+                throw ab::InputError(QApplication::translate("main", "--theme: unknown theme '%1'")
+                                         .arg(parser.value(themeOption))
+                                         .toStdString());
+            shell.setTheme(*theme);
         }
     } catch (const ab::InputError& e) {
         std::fprintf(stderr, "amazeballs: %s\n", e.what());
@@ -138,6 +164,8 @@ int main(int argc, char** argv)
     }
     window.resize(1400, 900);
     window.show();
+    if (parser.isSet(lectureOption))
+        shell.lecture().setActive(true);
     if (parser.isSet(measureOption))
         measureFrames(window, std::max(1.0, parser.value(measureOption).toDouble()));
     else if (parser.isSet(playOption))
