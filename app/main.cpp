@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // amazeballs: the window.
 // `amazeballs [FILE.json] [--preset NAME|FILE] [--scene KEY] [--set NAME=VALUE]... [--speed X]
-//  [--play] [--measure-frames S] [--fresh]`.
+//  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]`.
+#include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/presets/preset_actions.h"
 #include "ui/settings/window_settings.h"
+#include "ui/shell/window_shell.h"
 #include "ui/view/ball_view.h"
 
 #include <QApplication>
@@ -12,6 +14,7 @@
 #include <QDir>
 #include <QFile>
 #include <QIcon>
+#include <QLocale>
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -51,7 +54,8 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
     auto* samples = new std::vector<std::pair<double, double>>;
     ab::ui::BallView* view = window.view();
     if (!view) {
-        std::fprintf(stderr, "amazeballs: --measure-frames needs the 3D view (an OpenGL platform)\n");
+        std::fprintf(stderr, "amazeballs: %s\n",
+                     qPrintable(QApplication::translate("main", "--measure-frames needs the 3D view (an OpenGL platform)")));
         QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
         return;
     }
@@ -103,6 +107,7 @@ int main(int argc, char** argv)
     QApplication::setDesktopFileName("amazeballs");
     QApplication::setWindowIcon(QIcon(":/icons/amazeballs.svg"));
     QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
+    ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system())); // the Language menu changes it
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Bouncing and colliding balls, stage by stage."));
@@ -121,35 +126,56 @@ int main(int argc, char** argv)
     const QCommandLineOption freshOption(
         "fresh", QApplication::translate("main", "Start as on a first start: neither read nor write the remembered "
                                                  "window, stage and settings."));
-    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption, presetOption, freshOption});
+    const QCommandLineOption lectureOption(
+        "lecture", QApplication::translate("main", "Open in lecture mode: full screen, large text, the step-by-step walk."));
+    const QCommandLineOption themeOption(
+        "theme", QApplication::translate("main", "Colours: light, dark, high-contrast-light or high-contrast-dark."),
+        "KEY");
+    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption, presetOption, freshOption,
+                       lectureOption, themeOption});
     parser.addPositionalArgument("FILE.json", QApplication::translate("main", "A preset file to open."), "[FILE.json]");
     parser.process(app);
 
-    ab::ui::MainWindow window;
+    ab::ui::WindowShell shell;
+    ab::ui::MainWindow& window = shell.window(); // replaced by a language switch: use only before it
     QSettings store;
-    ab::ui::WindowSettings* settings = nullptr;
     bool placed = false;
     if (!parser.isSet(freshOption)) {
-        settings = new ab::ui::WindowSettings(window, store); // owned by the window
+        // Each window remembers from its start; a language switch carries the setup over,
+        // so the rebuilt window only needs a new recorder.
+        auto remember = [&app, &store](ab::ui::MainWindow& w) {
+            auto* settings = new ab::ui::WindowSettings(w, store); // owned by the window
+            QObject::connect(&app, &QCoreApplication::aboutToQuit, settings, &ab::ui::WindowSettings::save);
+            return settings;
+        };
+        ab::ui::WindowSettings* settings = remember(window);
         placed = settings->restore();
         for (const QString& skipped : settings->skipped())
-            std::fprintf(stderr, "amazeballs: a remembered setup was skipped: %s\n", qPrintable(skipped));
-        QObject::connect(&app, &QCoreApplication::aboutToQuit, settings, &ab::ui::WindowSettings::save);
+            std::fprintf(stderr, "amazeballs: %s %s\n",
+                         qPrintable(QApplication::translate("main", "a remembered setup was skipped:")),
+                         qPrintable(skipped));
+        QObject::connect(&shell, &ab::ui::WindowShell::windowReplaced, &shell,
+                         [remember](ab::ui::MainWindow* w) { remember(*w); });
     }
     try {
         const QStringList files = parser.positionalArguments();
         if (files.size() > 1 || (files.size() == 1 && parser.isSet(presetOption)))
-            throw ab::InputError("give one preset: a FILE.json or --preset NAME|FILE");
+            throw ab::InputError(
+                QApplication::translate("main", "give one preset: a FILE.json or --preset NAME|FILE").toStdString());
         if (!files.isEmpty() || parser.isSet(presetOption)) {
             if (parser.isSet(sceneOption))
-                throw ab::InputError("--scene: a preset names its own stage; give one or the other");
+                throw ab::InputError(
+                    QApplication::translate("main", "--scene: a preset names its own stage; give one or the other")
+                        .toStdString());
             const QString preset = files.isEmpty() ? parser.value(presetOption) : files.front();
             ab::ui::applyPresetToWindow(window, ab::loadPreset(preset.toStdString()));
         }
         if (parser.isSet(sceneOption)) {
             const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
             if (!scene)
-                throw ab::InputError("--scene: unknown scene '" + parser.value(sceneOption).toStdString() + "'");
+                throw ab::InputError(QApplication::translate("main", "--scene: unknown scene '%1'")
+                                         .arg(parser.value(sceneOption))
+                                         .toStdString());
             window.showScene(scene->id);
         }
         if (!parser.values(setOption).isEmpty()) {
@@ -157,13 +183,25 @@ int main(int argc, char** argv)
             for (const QString& assignment : parser.values(setOption))
                 values.parseAssignment(assignment.toStdString());
             if (!window.applyValues(values))
-                throw ab::InputError("--set: the values were refused (see the window's status bar)");
+                throw ab::InputError(
+                    QApplication::translate("main", "--set: the values were refused (see the window's status bar)")
+                        .toStdString());
         }
         if (parser.isSet(speedOption)) {
             const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
             if (speed < 0.1 || speed > 10.0)
-                throw ab::InputError("--speed: " + ab::formatNumber(speed) + " is outside [0.1, 10]");
+                throw ab::InputError(QApplication::translate("main", "--speed: %1 is outside [0.1, 10]")
+                                         .arg(QString::fromStdString(ab::formatNumber(speed)))
+                                         .toStdString());
             window.controller().setSpeed(speed);
+        }
+        if (parser.isSet(themeOption)) {
+            const auto theme = ab::ui::parseTheme(parser.value(themeOption));
+            if (!theme)
+                throw ab::InputError(QApplication::translate("main", "--theme: unknown theme '%1'")
+                                         .arg(parser.value(themeOption))
+                                         .toStdString());
+            shell.setTheme(*theme);
         }
     } catch (const ab::InputError& e) {
         std::fprintf(stderr, "amazeballs: %s\n", e.what());
@@ -172,6 +210,8 @@ int main(int argc, char** argv)
     if (!placed)
         window.resize(1400, 900);
     window.show();
+    if (parser.isSet(lectureOption))
+        shell.lecture().setActive(true);
     if (parser.isSet(measureOption))
         measureFrames(window, std::max(1.0, parser.value(measureOption).toDouble()));
     else if (parser.isSet(playOption))

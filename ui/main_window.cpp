@@ -5,6 +5,7 @@
 #include "about_box.h"
 #include "export_files.h"
 #include "figures/figure_actions.h"
+#include "i18n/core_text.h"
 #include "panels/parameter_panel.h"
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
@@ -185,7 +186,7 @@ void MainWindow::buildMenus()
     QMenu* stage = menuBar()->addMenu(tr("&Stage"));
     for (const SceneInfo* s : allScenes()) {
         const SceneId id = s->id;
-        stage->addAction(tr("%1  %2").arg(s->stage).arg(qs(s->title)), QKeySequence(Qt::Key_0 + s->stage), this,
+        stage->addAction(tr("%1  %2").arg(s->stage).arg(coreText(s->title)), QKeySequence(Qt::Key_0 + s->stage), this,
                          [this, id] { showScene(id); });
     }
     stage->addSeparator();
@@ -193,6 +194,7 @@ void MainWindow::buildMenus()
     stage->addAction(tr("Next stage"), QKeySequence(Qt::Key_PageDown), navigator_, &StageNavigator::next);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName("viewMenu"); // the lecture and theme items join it (ui/shell/)
     QAction* reset = view->addAction(tr("Reset view"), QKeySequence(Qt::Key_Home), this, [this] {
         if (view_)
             view_->resetView();
@@ -211,6 +213,7 @@ void MainWindow::buildMenus()
     addToolsMenu(this, [this] { return controller_.spec(); });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName("helpMenu");
     help->addAction(tr("Keys and mouse"), QKeySequence::HelpContents, this, &MainWindow::showKeys);
     help->addAction(tr("About Amazeballs"), this, &MainWindow::showAbout);
 }
@@ -309,15 +312,15 @@ void MainWindow::runReplaced()
 {
     scene_ = controller_.spec().scene;
     const SceneInfo& info = sceneInfo(scene_);
-    setWindowTitle(tr("Amazeballs - stage %1: %2").arg(info.stage).arg(qs(info.title)));
+    setWindowTitle(tr("Amazeballs - stage %1: %2").arg(info.stage).arg(coreText(info.title)));
     const RunSpec& spec = controller_.spec();
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
-    readout_->setUnits(qs(info.timeUnit), qs(info.lengthUnit));
+    readout_->setUnits(coreText(info.timeUnit), coreText(info.lengthUnit));
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd());
     showReference();
     if (view_) {
-        view_->setScene(layout, qs(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
+        view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
         framedScene_ = scene_;
         view_->setSelected(ball);
     }
@@ -386,7 +389,7 @@ void MainWindow::refresh()
         return;
     panelClock_.restart();
     charts_->setCursorTime(viewT ? viewT : std::optional<double>(status.t));
-    transport_->setRecorded(start, status.t, qs(sceneInfo(scene_).timeUnit));
+    transport_->setRecorded(start, status.t, coreText(sceneInfo(scene_).timeUnit));
     readout_->show(status);
     if (view_ && fpsClock_.elapsed() >= 1000) {
         readout_->setFrameRate(1000.0 * framesSinceFps_ / double(fpsClock_.restart()));

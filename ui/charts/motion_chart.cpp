@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "motion_chart.h"
 
+#include "ui/i18n/core_text.h"
+
 #include "downsample.h"
 #include "nice_ticks.h"
 
@@ -121,8 +123,8 @@ void MotionChart::configure(const SceneInfo& scene, int ball)
     shownAxes_ = kind_ == ChartKind::Energy ? std::vector<int>{0}
                  : scene.axes == 1          ? std::vector<int>{1}
                                             : std::vector<int>{0, 1, 2};
-    const QString time = QString::fromStdString(scene.timeUnit);
-    const QString length = QString::fromStdString(scene.lengthUnit);
+    const QString time = coreText(scene.timeUnit);
+    const QString length = coreText(scene.lengthUnit);
     const QString who = scene.ballCount == 1 ? tr("the ball") : tr("ball %1").arg(ball + 1);
     switch (kind_) {
     case ChartKind::Position:

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "parameter_panel.h"
 
+#include "ui/i18n/core_text.h"
+
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -20,7 +22,7 @@ QString qs(const std::string& s)
 // "m/s^2" -> "m/s²": the tables write powers the way a command line can.
 QString prettyUnit(const std::string& unit)
 {
-    QString u = qs(unit);
+    QString u = coreText(unit);
     u.replace("^2", QString::fromUtf8("\u00b2"));
     u.replace("^3", QString::fromUtf8("\u00b3"));
     return u == "1" ? QString() : u;
@@ -64,8 +66,8 @@ QString ParameterPanel::tooltip(const ParamSpec& spec)
 {
     const QString unit = prettyUnit(spec.unit);
     return QStringLiteral("<b>%1</b> (%2): %3<br>%4 %5<br>%6 %7 %8<br>%9 %10")
-        .arg(qs(spec.symbol).toHtmlEscaped(), qs(spec.key).toHtmlEscaped(), qs(spec.meaning).toHtmlEscaped(),
-             tr("Report:"), qs(spec.equation).toHtmlEscaped(), tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(),
+        .arg(qs(spec.symbol).toHtmlEscaped(), qs(spec.key).toHtmlEscaped(), coreText(spec.meaning).toHtmlEscaped(),
+             tr("Report:"), coreText(spec.equation).toHtmlEscaped(), tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(),
              unit.toHtmlEscaped(), tr("Report value:"))
         .arg(qs(formatValue(spec, spec.defaultValue)).toHtmlEscaped());
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "run_options_panel.h"
 
+#include "ui/i18n/core_text.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -47,7 +49,7 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
     integrator_ = new QComboBox;
     integrator_->setObjectName("integratorCombo");
     for (Integrator i : allIntegrators())
-        integrator_->addItem(qs(integratorTitle(i)) + " (" + qs(integratorKey(i)) + ")", int(i));
+        integrator_->addItem(coreText(integratorTitle(i)) + " (" + qs(integratorKey(i)) + ")", int(i));
     form->addRow(tr("Integrator"), integrator_);
 
     impacts_ = new QComboBox;
@@ -95,7 +97,7 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     selectData(impacts_, int(options.impacts));
     dt_->setPlaceholderText(tr("%1 (the model's step)").arg(qs(formatNumber(defaultDt(scene.id, options.model)))));
     dt_->setText(options.dt ? qs(formatNumber(*options.dt)) : QString());
-    dtUnit_->setText(qs(scene.timeUnit));
+    dtUnit_->setText(coreText(scene.timeUnit));
     steps_->setText(QString::number(options.steps));
     error_->hide();
     updateEnabled();

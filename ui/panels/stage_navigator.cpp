@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "stage_navigator.h"
 
+#include "ui/i18n/core_text.h"
+
 #include <QButtonGroup>
+#include <QEvent>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTextBrowser>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace ab::ui {
 
@@ -13,7 +20,7 @@ namespace {
 
 QString html(const std::string& s)
 {
-    return QString::fromStdString(s).toHtmlEscaped();
+    return coreText(s).toHtmlEscaped();
 }
 
 int indexOf(SceneId id)
@@ -37,11 +44,11 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
     const auto& scenes = allScenes();
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const SceneInfo& s = *scenes[i];
+        // The scene keys are the contract's names, the same in every language.
         auto* b = new QPushButton(QStringLiteral("%1  %2").arg(s.stage).arg(QString::fromStdString(s.key)));
         b->setCheckable(true);
         b->setFocusPolicy(Qt::NoFocus);
         b->setObjectName(QStringLiteral("stage-%1").arg(QString::fromStdString(s.key)));
-        b->setToolTip(tr("Stage %1: %2 (key %1)").arg(s.stage).arg(QString::fromStdString(s.title)));
         buttons_->addButton(b, static_cast<int>(i));
         row->addWidget(b);
     }
@@ -53,9 +60,15 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
     text_->setOpenLinks(false);
     layout->addWidget(text_, 1);
 
+    progress_ = new QLabel;
+    progress_->setObjectName("walkProgress");
+    progress_->setWordWrap(true);
+    progress_->hide();
+    layout->addWidget(progress_);
+
     auto* nav = new QHBoxLayout;
-    previous_ = new QPushButton(tr("< Previous stage"));
-    next_ = new QPushButton(tr("Next stage >"));
+    previous_ = new QPushButton;
+    next_ = new QPushButton;
     for (QPushButton* b : {previous_, next_})
         b->setFocusPolicy(Qt::NoFocus);
     nav->addWidget(previous_);
@@ -64,24 +77,32 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
     layout->addLayout(nav);
 
     connect(buttons_, &QButtonGroup::idClicked, this, &StageNavigator::request);
-    connect(previous_, &QPushButton::clicked, this, &StageNavigator::previous);
-    connect(next_, &QPushButton::clicked, this, &StageNavigator::next);
+    connect(previous_, &QPushButton::clicked, this, &StageNavigator::stepBack);
+    connect(next_, &QPushButton::clicked, this, &StageNavigator::stepForward);
+    retranslate();
     setCurrent(SceneId::Bounce1d);
 }
 
-QString StageNavigator::describe(const SceneInfo& s)
+QString StageNavigator::describe(const SceneInfo& s, int revealed)
 {
+    const int shown =
+        revealed < 0 ? static_cast<int>(s.equations.size()) : std::min(revealed, static_cast<int>(s.equations.size()));
     QString out =
-        QStringLiteral("<h3 style='margin-bottom:2px'>%1 %2: %3</h3>").arg(tr("Stage")).arg(s.stage).arg(html(s.title));
-    out += QStringLiteral("<p style='color:#555;margin-top:0'>%1 %2</p>").arg(tr("Report:"), html(s.reportRef));
+        QStringLiteral("<h3 style='margin-bottom:2px'>%1: %2</h3>").arg(tr("Stage %1").arg(s.stage), html(s.title));
+    out += QStringLiteral("<p style='margin-top:0'><i>%1 %2</i></p>").arg(tr("Report:"), html(s.reportRef));
     out += QStringLiteral("<p>%1</p>").arg(html(s.summary));
     out += QStringLiteral("<p><b>%1</b></p><table cellspacing='0' cellpadding='2'>").arg(tr("Equations"));
-    for (const Equation& e : s.equations)
-        out += QStringLiteral("<tr><td style='color:#555'>(%1)</td><td><tt>%2</tt></td></tr>"
-                              "<tr><td></td><td style='color:#444'><i>%3</i></td></tr>")
-                   .arg(html(e.number), html(e.text), html(e.meaning));
+    for (int i = 0; i < shown; ++i) {
+        const Equation& e = s.equations[static_cast<std::size_t>(i)];
+        // In the walk the newest equation stands out; the formulas are the report's own.
+        const bool newest = revealed >= 0 && i + 1 == shown;
+        const QString formula = newest ? QStringLiteral("<b><tt>%1</tt></b>") : QStringLiteral("<tt>%1</tt>");
+        out += QStringLiteral("<tr><td>(%1)</td><td>%2</td></tr><tr><td></td><td><i>%3</i></td></tr>")
+                   .arg(QString::fromStdString(e.number).toHtmlEscaped(),
+                        formula.arg(QString::fromStdString(e.text).toHtmlEscaped()), html(e.meaning));
+    }
     out += QStringLiteral("</table>");
-    if (!s.notes.empty()) {
+    if (!s.notes.empty() && shown == static_cast<int>(s.equations.size())) {
         out += QStringLiteral("<p><b>%1</b></p><ul style='margin-left:-20px'>").arg(tr("Notes on the report"));
         for (const ReportNote& n : s.notes)
             out += QStringLiteral("<li><b>%1</b>: %2</li>").arg(html(n.where), html(n.text));
@@ -93,16 +114,94 @@ QString StageNavigator::describe(const SceneInfo& s)
 void StageNavigator::setCurrent(SceneId scene)
 {
     current_ = scene;
+    revealed_ = 0;
     const int i = indexOf(scene);
     buttons_->button(i)->setChecked(true);
-    text_->setHtml(describe(sceneInfo(scene)));
-    previous_->setEnabled(i > 0);
-    next_->setEnabled(i + 1 < static_cast<int>(allScenes().size()));
+    previous_->setEnabled(i > 0 || walking_);
+    next_->setEnabled(i + 1 < static_cast<int>(allScenes().size()) || walking_);
+    showText();
 }
 
 QString StageNavigator::text() const
 {
     return text_->toPlainText();
+}
+
+void StageNavigator::setWalking(bool on)
+{
+    walking_ = on;
+    retranslate();
+    setCurrent(current_);
+}
+
+int StageNavigator::revealed() const
+{
+    return walking_ ? revealed_ : equationCount();
+}
+
+int StageNavigator::equationCount() const
+{
+    return static_cast<int>(sceneInfo(current_).equations.size());
+}
+
+void StageNavigator::stepForward()
+{
+    if (walking_ && revealed_ < equationCount()) {
+        ++revealed_;
+        showText();
+        return;
+    }
+    next();
+}
+
+void StageNavigator::stepBack()
+{
+    if (walking_ && revealed_ > 0) {
+        --revealed_;
+        showText();
+        return;
+    }
+    const SceneId before = current_;
+    previous();
+    if (walking_ && current_ != before) { // the window opened the previous stage
+        revealed_ = equationCount();
+        showText();
+    }
+}
+
+void StageNavigator::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        showText();
+    }
+    QWidget::changeEvent(event);
+}
+
+void StageNavigator::retranslate()
+{
+    const auto& scenes = allScenes();
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const SceneInfo& s = *scenes[i];
+        buttons_->button(static_cast<int>(i))
+            ->setToolTip(tr("Stage %1: %2 (key %1)").arg(s.stage).arg(coreText(s.title)));
+    }
+    previous_->setText(walking_ ? tr("< Back") : tr("< Previous stage"));
+    next_->setText(walking_ ? tr("Next >") : tr("Next stage >"));
+}
+
+void StageNavigator::showText()
+{
+    const SceneInfo& info = sceneInfo(current_);
+    text_->setHtml(describe(info, walking_ ? revealed_ : -1));
+    progress_->setVisible(walking_);
+    if (!walking_)
+        return;
+    const int count = equationCount();
+    progress_->setText(revealed_ < count
+                           ? tr("Equation %1 of %2. Next shows the next equation.").arg(revealed_).arg(count)
+                           : tr("All %1 equations shown. Next opens the next stage.").arg(count));
+    text_->verticalScrollBar()->setValue(text_->verticalScrollBar()->maximum()); // keep the newest in sight
 }
 
 void StageNavigator::request(int index)

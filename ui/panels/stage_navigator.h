@@ -2,6 +2,11 @@
 // The report's four stages in order: one button each, the stage's title, where it is in
 // the report, a short explanation, its numbered equations and the notes on the report's
 // typos and choices, with Previous and Next.
+//
+// The walk (lecture mode): the stage opens with its equations hidden; each step forward
+// reveals the next one, and after the last the next stage opens. A step back hides the
+// newest equation, and before the first the previous stage opens with all of its shown,
+// so that backward retraces forward exactly.
 #pragma once
 
 #include "core/scene.h"
@@ -9,6 +14,7 @@
 #include <QWidget>
 
 class QButtonGroup;
+class QLabel;
 class QPushButton;
 class QTextBrowser;
 
@@ -19,14 +25,20 @@ class StageNavigator : public QWidget {
 public:
     explicit StageNavigator(QWidget* parent = nullptr);
 
-    // Shows `scene` without emitting sceneRequested.
+    // Shows `scene` without emitting sceneRequested; in the walk, with no equation shown.
     void setCurrent(SceneId scene);
     SceneId current() const { return current_; }
     QString text() const; // the shown description, as plain text
 
-    // The description of a stage as rich text: title, report reference, summary,
-    // equations with their numbers, notes.
-    static QString describe(const SceneInfo& scene);
+    // The description of a stage as rich text: title, report reference, summary, the
+    // first `revealed` equations with their numbers (all when negative), and the notes
+    // once every equation is shown. Core texts pass through the translator.
+    static QString describe(const SceneInfo& scene, int revealed = -1);
+
+    void setWalking(bool on);
+    bool walking() const { return walking_; }
+    int revealed() const;      // equations shown
+    int equationCount() const; // of the current stage
 
 signals:
     void sceneRequested(SceneId scene);
@@ -34,15 +46,26 @@ signals:
 public slots:
     void previous();
     void next();
+    // The walk's steps; outside the walk they move by whole stages.
+    void stepForward();
+    void stepBack();
+
+protected:
+    void changeEvent(QEvent* event) override;
 
 private:
     void request(int index);
+    void retranslate();
+    void showText();
 
     QButtonGroup* buttons_;
     QTextBrowser* text_;
+    QLabel* progress_;
     QPushButton* previous_;
     QPushButton* next_;
     SceneId current_ = SceneId::Bounce1d;
+    bool walking_ = false;
+    int revealed_ = 0;
 };
 
 } // namespace ab::ui

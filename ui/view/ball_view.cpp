@@ -129,6 +129,19 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
     update();
 }
 
+void BallView::setColours(std::vector<unsigned> colours)
+{
+    colours_ = std::move(colours);
+    coloursDirty_ = true;
+    update();
+}
+
+void BallView::setBackground(const QColor& colour)
+{
+    background_ = colour;
+    update();
+}
+
 void BallView::resetView()
 {
     // Framed at the next paint, when the window's size (the aspect) is known.
@@ -222,6 +235,7 @@ RenderInputs BallView::renderInputs() const
     in.selected = layout_.balls > 1 ? selected_ : -1; // one ball needs no marking
     in.floorY = float(layout_.floorY);
     in.fadeHeight = float(std::max(6.0 * layout_.ballRadius, 0.08 * layout_.region.sizes().y()));
+    in.background = background_;
     return in;
 }
 

@@ -43,6 +43,9 @@ public:
     void setBalls(const std::vector<float>& xyz);
     void setSelected(int ball);
     void setTrace(std::vector<QVector3D> points);
+    // The balls' colours (0xRRGGBB, one per ball) and the clear colour, for the window's theme.
+    void setColours(std::vector<unsigned> colours);
+    void setBackground(const QColor& colour);
     void resetView();
     // Turns the camera about the vertical through the target (the window's turntable).
     void turn(float yawDegrees);
@@ -92,6 +95,7 @@ private:
     SceneLayout layout_;
     SceneGeometry geometry_;
     std::vector<unsigned> colours_;
+    QColor background_{0xec, 0xf0, 0xf5};
     std::vector<float> balls_;
     std::vector<QVector3D> trace_;
     int selected_ = 0;

@@ -164,7 +164,7 @@ void SceneRenderer::setCommonUniforms(QOpenGLShaderProgram& p, const RenderInput
 void SceneRenderer::draw(const RenderInputs& in)
 {
     glViewport(0, 0, in.viewport.width(), in.viewport.height());
-    glClearColor(0.925f, 0.94f, 0.96f, 1.0f);
+    glClearColor(in.background.redF(), in.background.greenF(), in.background.blueF(), 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!ready_)
         return;

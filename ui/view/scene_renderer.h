@@ -30,6 +30,7 @@ struct RenderInputs {
     int selected = -1;
     float floorY = 0.0f;
     float fadeHeight = 1.0f; // contact shadows fade out at this height
+    QColor background{0xec, 0xf0, 0xf5}; // the clear colour (the window's theme)
 };
 
 class SceneRenderer : protected QOpenGLExtraFunctions {

@@ -1,0 +1,1208 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="sv_SE">
+<context>
+    <name>SceneGeometry</name>
+    <message>
+        <source>y (%1)</source>
+        <translation>y (%1)</translation>
+    </message>
+    <message>
+        <source>L = %1 %2</source>
+        <translation>L = %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>Theme</name>
+    <message>
+        <source>Light</source>
+        <translation>Ljust</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Mörkt</translation>
+    </message>
+    <message>
+        <source>High contrast light</source>
+        <translation>Hög kontrast, ljust</translation>
+    </message>
+    <message>
+        <source>High contrast dark</source>
+        <translation>Hög kontrast, mörkt</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::BallView</name>
+    <message>
+        <source>3D view</source>
+        <translation>3D-vy</translation>
+    </message>
+    <message>
+        <source>OpenGL error: %1</source>
+        <translation>OpenGL-fel: %1</translation>
+    </message>
+    <message>
+        <source>Arrow keys move the camera; Esc gives the keys back to the transport</source>
+        <translation>Piltangenterna flyttar kameran; Esc lämnar tillbaka tangenterna till uppspelningen</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::ChartPanel</name>
+    <message>
+        <source>Charts of ball</source>
+        <translation>Diagram för boll</translation>
+    </message>
+    <message>
+        <source>The ball the charts and the trace follow (or click a ball in the 3D view)</source>
+        <translation>Bollen som diagrammen och spåret följer (eller klicka på en boll i 3D-vyn)</translation>
+    </message>
+    <message>
+        <source>Right-click a chart to export it</source>
+        <translation>Högerklicka på ett diagram för att exportera det</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>av %1</translation>
+    </message>
+    <message>
+        <source>Export this chart as PNG...</source>
+        <translation>Exportera diagrammet som PNG...</translation>
+    </message>
+    <message>
+        <source>Export this chart as SVG...</source>
+        <translation>Exportera diagrammet som SVG...</translation>
+    </message>
+    <message>
+        <source>Export the chart data as CSV...</source>
+        <translation>Exportera diagrammens data som CSV...</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::MainWindow</name>
+    <message>
+        <source>Amazeballs</source>
+        <translation>Amazeballs</translation>
+    </message>
+    <message>
+        <source>Transport</source>
+        <translation>Uppspelning</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Run&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Körning&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Constants&lt;/b&gt; (hover for the equation)</source>
+        <translation>&lt;b&gt;Konstanter&lt;/b&gt; (håll muspekaren över för ekvationen)</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL, which the &apos;%1&apos; platform does not offer.
+Charts, constants and the run work as usual.</source>
+        <translation>3D-vyn behöver OpenGL, som plattformen &apos;%1&apos; inte erbjuder.
+Diagram, konstanter och körningen fungerar som vanligt.</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arkiv</translation>
+    </message>
+    <message>
+        <source>Export current chart...</source>
+        <translation>Exportera aktuellt diagram...</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Export chart</source>
+        <translation>Exportera diagram</translation>
+    </message>
+    <message>
+        <source>%1 chart...</source>
+        <translation>Diagrammet %1...</translation>
+    </message>
+    <message>
+        <source>Export chart data as CSV...</source>
+        <translation>Exportera diagramdata som CSV...</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Export 3D view as PNG...</source>
+        <translation>Exportera 3D-vyn som PNG...</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Avsluta</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Körning</translation>
+    </message>
+    <message>
+        <source>Play / pause</source>
+        <translation>Spela / pausa</translation>
+    </message>
+    <message>
+        <source>One step</source>
+        <translation>Ett steg</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Återställ</translation>
+    </message>
+    <message>
+        <source>Slower</source>
+        <translation>Långsammare</translation>
+    </message>
+    <message>
+        <source>Faster</source>
+        <translation>Snabbare</translation>
+    </message>
+    <message>
+        <source>&amp;Stage</source>
+        <translation>&amp;Etapp</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source>Previous stage</source>
+        <translation>Föregående etapp</translation>
+    </message>
+    <message>
+        <source>Next stage</source>
+        <translation>Nästa etapp</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Visa</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Återställ vyn</translation>
+    </message>
+    <message>
+        <source>Turntable</source>
+        <translation>Snurrbord</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hjälp</translation>
+    </message>
+    <message>
+        <source>Keys and mouse</source>
+        <translation>Tangenter och mus</translation>
+    </message>
+    <message>
+        <source>About Amazeballs</source>
+        <translation>Om Amazeballs</translation>
+    </message>
+    <message>
+        <source>Amazeballs - stage %1: %2</source>
+        <translation>Amazeballs - etapp %1: %2</translation>
+    </message>
+    <message>
+        <source>closed form</source>
+        <translation>sluten form</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg);;PNG image (*.png)</source>
+        <translation>SVG-bild (*.svg);;PNG-bild (*.png)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG image (*.svg)</source>
+        <translation>PNG-bild (*.png);;SVG-bild (*.svg)</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV-tabell (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Exporten misslyckades</translation>
+    </message>
+    <message>
+        <source>Export 3D view</source>
+        <translation>Exportera 3D-vyn</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-bild (*.png)</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play / pause&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;one step&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;reset the run&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;slower / faster&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1 - 4&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the report&apos;s stages; PgUp / PgDn: previous / next&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+E&lt;/b&gt;&lt;/td&gt;&lt;td&gt;export the current chart (Ctrl+Shift+E: its data as CSV)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;reset the 3D view; T: turntable&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td colspan=2&gt;&lt;br&gt;&lt;b&gt;3D view&lt;/b&gt;: left drag orbits, right or middle drag (or Shift+left) pans, the wheel zooms, a click selects a ball, a double click on empty space resets the view. After a click in the view the arrow keys move the camera as in the report&apos;s WebGL program; Esc gives them back to the transport.&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mellanslag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;spela / pausa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Högerpil&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ett steg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ körningen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;långsammare / snabbare&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1 - 4&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rapportens etapper; PgUp / PgDn: föregående / nästa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+E&lt;/b&gt;&lt;/td&gt;&lt;td&gt;exportera aktuellt diagram (Ctrl+Shift+E: dess data som CSV)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ 3D-vyn; T: snurrbord&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td colspan=2&gt;&lt;br&gt;&lt;b&gt;3D-vyn&lt;/b&gt;: dra med vänster knapp för att kretsa, med höger eller mittknapp (eller Shift+vänster) för att panorera, hjulet zoomar, ett klick väljer en boll, ett dubbelklick på tom yta återställer vyn. Efter ett klick i vyn flyttar piltangenterna kameran som i rapportens WebGL-program; Esc lämnar tillbaka dem till uppspelningen.&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Amazeballs&lt;/b&gt; %1&lt;br&gt;Bouncing and colliding balls: the 2014 student report &quot;Amazeballs&quot; (Linköping University, TNM085) rebuilt as a teaching tool, stage by stage.</source>
+        <translation>&lt;b&gt;Amazeballs&lt;/b&gt; %1&lt;br&gt;Studsande och kolliderande bollar: studentrapporten &quot;Amazeballs&quot; från 2014 (Linköpings universitet, TNM085) återskapad som ett undervisningsverktyg, etapp för etapp.</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::MotionChart</name>
+    <message>
+        <source>the ball</source>
+        <translation>bollen</translation>
+    </message>
+    <message>
+        <source>ball %1</source>
+        <translation>boll %1</translation>
+    </message>
+    <message>
+        <source>Position of %1</source>
+        <translation>Position för %1</translation>
+    </message>
+    <message>
+        <source>position (%1)</source>
+        <translation>position (%1)</translation>
+    </message>
+    <message>
+        <source>Velocity of %1</source>
+        <translation>Hastighet för %1</translation>
+    </message>
+    <message>
+        <source>velocity (%1/%2)</source>
+        <translation>hastighet (%1/%2)</translation>
+    </message>
+    <message>
+        <source>Energy per unit mass, all balls (%1/%2)</source>
+        <translation>Energi per massenhet, alla bollar (%1/%2)</translation>
+    </message>
+    <message>
+        <source>E/m</source>
+        <translation>E/m</translation>
+    </message>
+    <message>
+        <source>t (%1)</source>
+        <translation>t (%1)</translation>
+    </message>
+    <message>
+        <source> (closed form)</source>
+        <translation> (sluten form)</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::ParameterPanel</name>
+    <message>
+        <source>Report values</source>
+        <translation>Rapportens värden</translation>
+    </message>
+    <message>
+        <source>Restore every constant of this stage to the report&apos;s value</source>
+        <translation>Återställ varje konstant i denna etapp till rapportens värde</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>Rapporten:</translation>
+    </message>
+    <message>
+        <source>Range:</source>
+        <translation>Intervall:</translation>
+    </message>
+    <message>
+        <source>Report value:</source>
+        <translation>Rapportens värde:</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>Inte tillämpat: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::RunOptionsPanel</name>
+    <message>
+        <source>report: the report&apos;s own rules</source>
+        <translation>report: rapportens egna regler</translation>
+    </message>
+    <message>
+        <source>physical: textbook rigid balls</source>
+        <translation>physical: stela bollar enligt läroboken</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>located inside the step</source>
+        <translation>lokaliserade inom steget</translation>
+    </message>
+    <message>
+        <source>at the step&apos;s end (as the report)</source>
+        <translation>vid stegets slut (som rapporten)</translation>
+    </message>
+    <message>
+        <source>Impacts</source>
+        <translation>Stötar</translation>
+    </message>
+    <message>
+        <source>Step dt</source>
+        <translation>Tidssteg dt</translation>
+    </message>
+    <message>
+        <source>Length of the run in steps; the report&apos;s value by default</source>
+        <translation>Körningens längd i steg; rapportens värde som standard</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Steg</translation>
+    </message>
+    <message>
+        <source>%1 (the model&apos;s step)</source>
+        <translation>%1 (modellens tidssteg)</translation>
+    </message>
+    <message>
+        <source>The report model has one scheme per stage, the report&apos;s own</source>
+        <translation>Rapportmodellen har en metod per etapp, rapportens egen</translation>
+    </message>
+    <message>
+        <source>How the physical model advances in time</source>
+        <translation>Hur den fysikaliska modellen stegar fram i tiden</translation>
+    </message>
+    <message>
+        <source>Where impacts are found</source>
+        <translation>Var stötar hittas</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>Inte tillämpat: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StageNavigator</name>
+    <message>
+        <source>Stage %1</source>
+        <translation>Etapp %1</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>Rapporten:</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Ekvationer</translation>
+    </message>
+    <message>
+        <source>Notes on the report</source>
+        <translation>Anmärkningar om rapporten</translation>
+    </message>
+    <message>
+        <source>Stage %1: %2 (key %1)</source>
+        <translation>Etapp %1: %2 (tangent %1)</translation>
+    </message>
+    <message>
+        <source>&lt; Back</source>
+        <translation>&lt; Bakåt</translation>
+    </message>
+    <message>
+        <source>&lt; Previous stage</source>
+        <translation>&lt; Föregående etapp</translation>
+    </message>
+    <message>
+        <source>Next &gt;</source>
+        <translation>Nästa &gt;</translation>
+    </message>
+    <message>
+        <source>Next stage &gt;</source>
+        <translation>Nästa etapp &gt;</translation>
+    </message>
+    <message>
+        <source>Equation %1 of %2. Next shows the next equation.</source>
+        <translation>Ekvation %1 av %2. Nästa visar nästa ekvation.</translation>
+    </message>
+    <message>
+        <source>All %1 equations shown. Next opens the next stage.</source>
+        <translation>Alla %1 ekvationer visas. Nästa öppnar nästa etapp.</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StatusReadout</name>
+    <message>
+        <source>Wall time of one simulation step</source>
+        <translation>Verklig tid för ett simuleringssteg</translation>
+    </message>
+    <message>
+        <source>Frames drawn per second by the 3D view</source>
+        <translation>Bilder per sekund som 3D-vyn ritar</translation>
+    </message>
+    <message>
+        <source>Kinetic plus potential energy per unit mass, summed over the balls, with the height measured from the floor</source>
+        <translation>Kinetisk plus potentiell energi per massenhet, summerad över bollarna, med höjden räknad från golvet</translation>
+    </message>
+    <message>
+        <source>t = %1 %2</source>
+        <translation>t = %1 %2</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>steg %1</translation>
+    </message>
+    <message>
+        <source>E/m = %1 %2%3/%4%3</source>
+        <translation>E/m = %1 %2%3/%4%3</translation>
+    </message>
+    <message>
+        <source>E/m = -</source>
+        <translation>E/m = -</translation>
+    </message>
+    <message>
+        <source>Stopped: %1</source>
+        <translation>Stoppad: %1</translation>
+    </message>
+    <message>
+        <source>The run is complete; Play starts it again</source>
+        <translation>Körningen är klar; Spela startar den igen</translation>
+    </message>
+    <message>
+        <source>no 3D view</source>
+        <translation>ingen 3D-vy</translation>
+    </message>
+    <message>
+        <source>- fps</source>
+        <translation>- bilder/s</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 bilder/s</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::TransportBar</name>
+    <message>
+        <source>Step</source>
+        <translation>Steg</translation>
+    </message>
+    <message>
+        <source>One step (Right arrow)</source>
+        <translation>Ett steg (högerpil)</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Återställ</translation>
+    </message>
+    <message>
+        <source>Back to the start (R)</source>
+        <translation>Tillbaka till början (R)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Hastighet</translation>
+    </message>
+    <message>
+        <source>Simulated time per real second: 0.1x to 10x real time</source>
+        <translation>Simulerad tid per verklig sekund: 0,1x till 10x verklig tid</translation>
+    </message>
+    <message>
+        <source>Drag to look back through the recorded run; the right end is live</source>
+        <translation>Dra för att se tillbaka i den inspelade körningen; högra änden är direkt</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Paus</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Spela</translation>
+    </message>
+    <message>
+        <source>Play or pause (Space)</source>
+        <translation>Spela eller pausa (mellanslag)</translation>
+    </message>
+    <message>
+        <source>t = %1 of %2 %3 (looking back)</source>
+        <translation>t = %1 av %2 %3 (tillbakablick)</translation>
+    </message>
+    <message>
+        <source>t = %1 %2 (live)</source>
+        <translation>t = %1 %2 (direkt)</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::WindowShell</name>
+    <message>
+        <source>Lecture mode</source>
+        <translation>Föreläsningsläge</translation>
+    </message>
+    <message>
+        <source>Ctrl+L</source>
+        <translation>Ctrl+L</translation>
+    </message>
+    <message>
+        <source>Full screen</source>
+        <translation>Helskärm</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Tema</translation>
+    </message>
+    <message>
+        <source>Colour-blind-safe palette</source>
+        <translation>Färgblindsäker palett</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>S&amp;pråk</translation>
+    </message>
+</context>
+<context>
+    <name>core</name>
+    <message>
+        <source>1/step^2</source>
+        <translation>1/steg^2</translation>
+    </message>
+    <message>
+        <source>2.1.1, 2.2.1, Appendix A, Figure 2.5</source>
+        <translation>2.1.1, 2.2.1, Bilaga A, Figur 2.5</translation>
+    </message>
+    <message>
+        <source>2.1.2, Appendix C, eqs 2.4-2.11</source>
+        <translation>2.1.2, Bilaga C, ekv. 2.4-2.11</translation>
+    </message>
+    <message>
+        <source>2.2.1 (Zeno)</source>
+        <translation>2.2.1 (Zeno)</translation>
+    </message>
+    <message>
+        <source>2.2.2 (Zeno)</source>
+        <translation>2.2.2 (Zeno)</translation>
+    </message>
+    <message>
+        <source>2.2.2, Appendix B, Appendix C (propagation), Figures 2.6-2.7</source>
+        <translation>2.2.2, Bilaga B, Bilaga C (propagation), Figur 2.6-2.7</translation>
+    </message>
+    <message>
+        <source>2.3, Appendix D, eqs 2.23-2.31, Figure 3.1</source>
+        <translation>2.3, Bilaga D, ekv. 2.23-2.31, Figur 3.1</translation>
+    </message>
+    <message>
+        <source>3.1 (air resistance)</source>
+        <translation>3.1 (luftmotstånd)</translation>
+    </message>
+    <message>
+        <source>A ball bouncing in one dimension</source>
+        <translation>En boll som studsar i en dimension</translation>
+    </message>
+    <message>
+        <source>A ball falls from rest and bounces on a floor. Flight follows dv/dt = -g and dx/dt = v (eqs 2.1-2.2); an impact reverses and shrinks the velocity, v1 = -k v0 (eq 2.3). The bounces come ever faster (Zeno behaviour), so the report stops the ball after a fixed number of bounces.</source>
+        <translation>En boll faller från vila och studsar mot ett golv. I luften gäller dv/dt = -g och dx/dt = v (ekv. 2.1-2.2); en stöt vänder och minskar hastigheten, v1 = -k v0 (ekv. 2.3). Studsarna kommer allt tätare (Zeno-beteende), så rapporten stoppar bollen efter ett bestämt antal studsar.</translation>
+    </message>
+    <message>
+        <source>A floor hit is p &lt;= 0 and v &lt;= 0 at the start of a step. That step also sets the stored position of the contact state to 0, and when the bounce counter exceeds max_bounces the contact state and every later state are set to zero.</source>
+        <translation>En golvträff är p &lt;= 0 och v &lt;= 0 i början av ett steg. Det steget sätter också kontakttillståndets lagrade position till 0, och när studsräknaren överskrider max_bounces sätts kontakttillståndet och varje senare tillstånd till noll.</translation>
+    </message>
+    <message>
+        <source>Appendix A</source>
+        <translation>Bilaga A</translation>
+    </message>
+    <message>
+        <source>Appendix B</source>
+        <translation>Bilaga B</translation>
+    </message>
+    <message>
+        <source>Appendix C</source>
+        <translation>Bilaga C</translation>
+    </message>
+    <message>
+        <source>Appendix D</source>
+        <translation>Bilaga D</translation>
+    </message>
+    <message>
+        <source>At the floor the new vertical velocity is -k v - g dt (g the magnitude; the code adds grav dt with grav = -9.82) and the position restarts from the floor, p[new] = v[new] dt; the contact state&apos;s stored coordinate is set to the face it hit.</source>
+        <translation>Vid golvet blir den nya vertikala hastigheten -k v - g dt (g är beloppet; koden adderar grav dt med grav = -9.82) och positionen börjar om från golvet, p[new] = v[new] dt; kontakttillståndets lagrade koordinat sätts till den sida som träffades.</translation>
+    </message>
+    <message>
+        <source>Before settling on a coefficient of restitution the report considered spring equations for the bounce. The physical model offers them as `contact` 1 (y&apos;&apos; = -g - k_s y - c_s v below the floor) and 2 (Hertz, y&apos;&apos; = -g + k_h d^1.5 - c_h d^0.25 v with d = -y); their damping gives the restitution k and their stiffness the contact time t_c, and a stiff spring makes the ODE stiff.</source>
+        <translation>Innan rapporten valde en studskoefficient övervägdes fjäderekvationer för studsen. Den fysikaliska modellen erbjuder dem som `contact` 1 (y&apos;&apos; = -g - k_s y - c_s v under golvet) och 2 (Hertz, y&apos;&apos; = -g + k_h d^1.5 - c_h d^0.25 v med d = -y); deras dämpning ger studskoefficienten k och deras styvhet kontakttiden t_c, och en styv fjäder gör differentialekvationen styv.</translation>
+    </message>
+    <message>
+        <source>Coulomb friction</source>
+        <translation>Coulombfriktion</translation>
+    </message>
+    <message>
+        <source>Each ball moves with the stage-2 rules (propagation). propagation works on a copy, so unlike stage 2 the recorded contact state keeps its unclamped coordinate.</source>
+        <translation>Varje boll rör sig enligt reglerna i etapp 2 (propagation). propagation arbetar på en kopia, så till skillnad från etapp 2 behåller det inspelade kontakttillståndet sin obegränsade koordinat.</translation>
+    </message>
+    <message>
+        <source>Event-driven (exact)</source>
+        <translation>Händelsestyrd (exakt)</translation>
+    </message>
+    <message>
+        <source>Every contact adds one to a counter; once it exceeds max_bounces the state the step started from and every later state are set to zero.</source>
+        <translation>Varje kontakt ökar en räknare med ett; när den överskrider max_bounces sätts tillståndet som steget började från och varje senare tillstånd till noll.</translation>
+    </message>
+    <message>
+        <source>Explicit Euler</source>
+        <translation>Explicit Euler</translation>
+    </message>
+    <message>
+        <source>Implicit Euler</source>
+        <translation>Implicit Euler</translation>
+    </message>
+    <message>
+        <source>Implicit midpoint</source>
+        <translation>Implicit mittpunktsmetod</translation>
+    </message>
+    <message>
+        <source>In the published code three.js&apos;s projectOnVector changes the vector it is called on, so v1n and v1t are one object and the decomposition collapses; the product implements the report&apos;s equations.</source>
+        <translation>I den publicerade koden ändrar three.js projectOnVector den vektor den anropas på, så v1n och v1t blir samma objekt och uppdelningen faller ihop; programmet implementerar rapportens ekvationer.</translation>
+    </message>
+    <message>
+        <source>Many balls in a box</source>
+        <translation>Många bollar i en kub</translation>
+    </message>
+    <message>
+        <source>Many balls start in a small cube at the centre of a 100-wide box with random velocities. The report&apos;s WebGL model updates once per frame: walls reverse and damp the velocity, and ball pairs closer than 2.2 r collide along their normal with a fixed tangent (eqs 2.23-2.31).</source>
+        <translation>Många bollar startar i en liten kub i mitten av en kub med sidan 100 och slumpade hastigheter. Rapportens WebGL-modell uppdateras en gång per bildruta: väggar vänder och dämpar hastigheten, och bollpar närmare än 2.2 r kolliderar längs sin normal med en fast tangent (ekv. 2.23-2.31).</translation>
+    </message>
+    <message>
+        <source>One ball in a box</source>
+        <translation>En boll i en kub</translation>
+    </message>
+    <message>
+        <source>One branch per step, in this order: floor y &lt;= 0, wall x &lt;= 0, wall x &gt;= box, wall z &lt;= 0, wall z &gt;= box, else free flight. A corner hit is handled one face per step.</source>
+        <translation>En gren per steg, i denna ordning: golv y &lt;= 0, vägg x &lt;= 0, vägg x &gt;= box, vägg z &lt;= 0, vägg z &gt;= box, annars fri flykt. En hörnträff hanteras en sida per steg.</translation>
+    </message>
+    <message>
+        <source>One counter, shared by both balls, counts every floor and wall contact and every swap; once it exceeds max_events both velocities are set to zero in the state the step started from and in every later state, while positions go on being computed.</source>
+        <translation>En räknare, gemensam för båda bollarna, räknar varje golv- och väggkontakt och varje byte; när den överskrider max_events sätts båda hastigheterna till noll i tillståndet som steget började från och i varje senare tillstånd, medan positionerna fortsätter att beräknas.</translation>
+    </message>
+    <message>
+        <source>Runge-Kutta 4</source>
+        <translation>Runge-Kutta 4</translation>
+    </message>
+    <message>
+        <source>Symplectic Euler</source>
+        <translation>Symplektisk Euler</translation>
+    </message>
+    <message>
+        <source>The ball is thrown sideways inside a 300 x 300 x 300 box with one corner at the origin and y up. Five faces are checked (no ceiling); a hit reverses the velocity along that face&apos;s axis and shrinks it by k, while the other axes fly on (eqs 2.17-2.22).</source>
+        <translation>Bollen kastas åt sidan inuti en kub på 300 x 300 x 300 med ett hörn i origo och y uppåt. Fem sidor kontrolleras (inget tak); en träff vänder hastigheten längs sidans axel och minskar den med k, medan de andra axlarna fortsätter (ekv. 2.17-2.22).</translation>
+    </message>
+    <message>
+        <source>The code counts time in steps (dt = 1) with gravity 0.0982 per step^2; the text&apos;s g = 9.82 is the same physics with the step read as 0.1 s.</source>
+        <translation>Koden räknar tiden i steg (dt = 1) med gravitationen 0.0982 per steg^2; textens g = 9.82 är samma fysik med steget läst som 0.1 s.</translation>
+    </message>
+    <message>
+        <source>The code&apos;s distance uses the y difference twice and no z difference; the product uses the Euclidean distance the code intends.</source>
+        <translation>Kodens avstånd använder y-skillnaden två gånger och ingen z-skillnad; programmet använder det euklidiska avstånd som koden avser.</translation>
+    </message>
+    <message>
+        <source>The code&apos;s literal 49 and -48 are box/2 - r and one radius above the floor; its push of 1 unit along the normal is one radius. With the report&apos;s r = 1 they are the same.</source>
+        <translation>Kodens konstanter 49 och -48 är box/2 - r och en radie ovanför golvet; dess förflyttning på 1 enhet längs normalen är en radie. Med rapportens r = 1 är de desamma.</translation>
+    </message>
+    <message>
+        <source>The equations and the refactored function propagation (Appendix C) move the position with the new velocity; the older listing of Appendix B uses the old one. The product follows the equations.</source>
+        <translation>Ekvationerna och den omskrivna funktionen propagation (Bilaga C) flyttar positionen med den nya hastigheten; den äldre listningen i Bilaga B använder den gamla. Programmet följer ekvationerna.</translation>
+    </message>
+    <message>
+        <source>The fixed tangent is undefined when n.z = 0. The product uses the same direction written as t = (0.3 n.z, 0.3 n.z, -0.3 (n.x + n.y)), which equals the report&apos;s up to sign (projections do not change) and tends to (0, 0, 1) as n.z -&gt; 0; when n.x + n.y = 0 too, every tz satisfies eq 2.24 and t = (1, 1, 0)/sqrt(2) is used.</source>
+        <translation>Den fasta tangenten är odefinierad när n.z = 0. Programmet använder samma riktning skriven som t = (0.3 n.z, 0.3 n.z, -0.3 (n.x + n.y)), som är lika med rapportens sånär som på tecknet (projektionerna ändras inte) och går mot (0, 0, 1) när n.z -&gt; 0; när även n.x + n.y = 0 uppfyller varje tz ekv. 2.24 och t = (1, 1, 0)/sqrt(2) används.</translation>
+    </message>
+    <message>
+        <source>The report prints it without the /2 that eq 2.6 and the code have; the /2 is used here.</source>
+        <translation>Rapporten skriver den utan det /2 som ekv. 2.6 och koden har; här används /2.</translation>
+    </message>
+    <message>
+        <source>The report prints p[new] = p[old] * v[old] * dt; its code (and intent) is p[new] = p[old] + v[old] dt, which is what runs here.</source>
+        <translation>Rapporten skriver p[new] = p[old] * v[old] * dt; dess kod (och avsikt) är p[new] = p[old] + v[old] dt, vilket är vad som körs här.</translation>
+    </message>
+    <message>
+        <source>The report prints v1n&apos; + v2n&apos; - v2n&apos;; the intent (and code) is v1n&apos; + v2n&apos; - v2n&apos;&apos;.</source>
+        <translation>Rapporten skriver v1n&apos; + v2n&apos; - v2n&apos;; avsikten (och koden) är v1n&apos; + v2n&apos; - v2n&apos;&apos;.</translation>
+    </message>
+    <message>
+        <source>The report&apos;s code does not use eqs 2.4-2.11 here: when the centres are closer than 2r after a step it swaps the two velocities and multiplies them by 0.95 (e), with no test that the balls approach, so the swap can repeat while they still overlap.</source>
+        <translation>Rapportens kod använder inte ekv. 2.4-2.11 här: när centrumen är närmare än 2r efter ett steg byter den plats på de två hastigheterna och multiplicerar dem med 0.95 (e), utan att pröva att bollarna närmar sig, så bytet kan upprepas medan de fortfarande överlappar.</translation>
+    </message>
+    <message>
+        <source>Two balls colliding</source>
+        <translation>Två bollar som kolliderar</translation>
+    </message>
+    <message>
+        <source>Two balls start at opposite sides of the box and meet head-on along z. The textbook collision splits each velocity into a normal part along the line of centres and a tangential part: tangential parts are kept, normal parts follow momentum conservation and restitution e (eqs 2.4-2.11). The report&apos;s own code instead swaps the two velocities and scales them by 0.95.</source>
+        <translation>Två bollar startar på motsatta sidor av kuben och möts rakt framifrån längs z. Lärobokens kollision delar varje hastighet i en normaldel längs centrumlinjen och en tangentiell del: de tangentiella delarna behålls, normaldelarna följer rörelsemängdens bevarande och stötkoefficienten e (ekv. 2.4-2.11). Rapportens egen kod byter i stället plats på de två hastigheterna och skalar dem med 0.95.</translation>
+    </message>
+    <message>
+        <source>Velocities are normalised before the projection and the results get swapped speeds: ball 1 leaves with 0.95 |v2|, ball 2 with 0.95 |v1|. A zero velocity stays zero.</source>
+        <translation>Hastigheterna normaliseras före projektionen och resultaten får varandras fart: boll 1 lämnar med 0.95 |v2|, boll 2 med 0.95 |v1|. En hastighet som är noll förblir noll.</translation>
+    </message>
+    <message>
+        <source>Velocity Verlet</source>
+        <translation>Hastighets-Verlet</translation>
+    </message>
+    <message>
+        <source>Zeno</source>
+        <translation>Zeno</translation>
+    </message>
+    <message>
+        <source>a ball with more bounces than this, near the floor, is put to rest on it</source>
+        <translation>en boll med fler studsar än så, nära golvet, läggs till vila på det</translation>
+    </message>
+    <message>
+        <source>a floor impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)</source>
+        <translation>en golvstöt långsammare än så studsar inte: bollen vilar (0: studsa till Zeno-tiden)</translation>
+    </message>
+    <message>
+        <source>a rebound that would rise less than this ends at rest (restitution threshold), at walls and between balls</source>
+        <translation>en studs som skulle stiga mindre än så slutar i vila (tröskel för studsen), vid väggar och mellan bollar</translation>
+    </message>
+    <message>
+        <source>along the axis of the wall that was hit</source>
+        <translation>längs axeln för väggen som träffades</translation>
+    </message>
+    <message>
+        <source>an impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)</source>
+        <translation>en stöt långsammare än så studsar inte: bollen vilar (0: studsa till Zeno-tiden)</translation>
+    </message>
+    <message>
+        <source>and moves on</source>
+        <translation>och fortsätter</translation>
+    </message>
+    <message>
+        <source>at the floor the velocity reverses and shrinks by k</source>
+        <translation>vid golvet vänder hastigheten och minskar med k</translation>
+    </message>
+    <message>
+        <source>ball 1 start position</source>
+        <translation>startposition för boll 1</translation>
+    </message>
+    <message>
+        <source>ball 1 start velocity</source>
+        <translation>starthastighet för boll 1</translation>
+    </message>
+    <message>
+        <source>ball 1&apos;s normal part after</source>
+        <translation>normaldelen för boll 1 efteråt</translation>
+    </message>
+    <message>
+        <source>ball 1&apos;s normal velocity after</source>
+        <translation>normalhastigheten för boll 1 efteråt</translation>
+    </message>
+    <message>
+        <source>ball 1&apos;s velocity after</source>
+        <translation>hastigheten för boll 1 efteråt</translation>
+    </message>
+    <message>
+        <source>ball 2 start position</source>
+        <translation>startposition för boll 2</translation>
+    </message>
+    <message>
+        <source>ball 2 start velocity</source>
+        <translation>starthastighet för boll 2</translation>
+    </message>
+    <message>
+        <source>ball 2&apos;s normal part after</source>
+        <translation>normaldelen för boll 2 efteråt</translation>
+    </message>
+    <message>
+        <source>ball 2&apos;s normal velocity after</source>
+        <translation>normalhastigheten för boll 2 efteråt</translation>
+    </message>
+    <message>
+        <source>ball 2&apos;s velocity after</source>
+        <translation>hastigheten för boll 2 efteråt</translation>
+    </message>
+    <message>
+        <source>ball radius</source>
+        <translation>bollens radie</translation>
+    </message>
+    <message>
+        <source>ball radius; contact when centres are closer than 2r</source>
+        <translation>bollens radie; kontakt när centrumen är närmare än 2r</translation>
+    </message>
+    <message>
+        <source>ball-ball restitution along the line of centres (the report also damps the components along a wall with it)</source>
+        <translation>stötkoefficient mellan bollar längs centrumlinjen (rapporten dämpar också komponenterna längs en vägg med den)</translation>
+    </message>
+    <message>
+        <source>ball-ball restitution; the report&apos;s code scales the swapped velocities by it</source>
+        <translation>stötkoefficient mellan bollar; rapportens kod skalar de bytta hastigheterna med den</translation>
+    </message>
+    <message>
+        <source>coefficient of restitution at floor and walls</source>
+        <translation>studskoefficient vid golv och väggar</translation>
+    </message>
+    <message>
+        <source>coefficient of restitution at the floor: v1 = -k v0</source>
+        <translation>studskoefficient vid golvet: v1 = -k v0</translation>
+    </message>
+    <message>
+        <source>duration of one spring contact (contact 1 or 2); with k it sets stiffness and damping</source>
+        <translation>varaktigheten av en fjäderkontakt (contact 1 eller 2); tillsammans med k bestämmer den styvhet och dämpning</translation>
+    </message>
+    <message>
+        <source>eq 2.1, 2.15</source>
+        <translation>ekv. 2.1, 2.15</translation>
+    </message>
+    <message>
+        <source>eq 2.12</source>
+        <translation>ekv. 2.12</translation>
+    </message>
+    <message>
+        <source>eq 2.16</source>
+        <translation>ekv. 2.16</translation>
+    </message>
+    <message>
+        <source>eq 2.17</source>
+        <translation>ekv. 2.17</translation>
+    </message>
+    <message>
+        <source>eq 2.19</source>
+        <translation>ekv. 2.19</translation>
+    </message>
+    <message>
+        <source>eq 2.3, 2.13</source>
+        <translation>ekv. 2.3, 2.13</translation>
+    </message>
+    <message>
+        <source>eq 2.3, Appendix D</source>
+        <translation>ekv. 2.3, Bilaga D</translation>
+    </message>
+    <message>
+        <source>eq 2.30</source>
+        <translation>ekv. 2.30</translation>
+    </message>
+    <message>
+        <source>eq 2.31</source>
+        <translation>ekv. 2.31</translation>
+    </message>
+    <message>
+        <source>eq 2.4 (any masses)</source>
+        <translation>ekv. 2.4 (godtyckliga massor)</translation>
+    </message>
+    <message>
+        <source>eq 2.5</source>
+        <translation>ekv. 2.5</translation>
+    </message>
+    <message>
+        <source>eqs 2.18-2.22</source>
+        <translation>ekv. 2.18-2.22</translation>
+    </message>
+    <message>
+        <source>eqs 2.24-2.25</source>
+        <translation>ekv. 2.24-2.25</translation>
+    </message>
+    <message>
+        <source>eqs 2.28-2.31, Appendix D</source>
+        <translation>ekv. 2.28-2.31, Bilaga D</translation>
+    </message>
+    <message>
+        <source>explicit Euler step of the velocity (g signed, down negative)</source>
+        <translation>explicit Euler-steg för hastigheten (g med tecken, nedåt negativt)</translation>
+    </message>
+    <message>
+        <source>floor contact of the physical model: 0 impulse v1 = -k v0 (eq 2.3), 1 linear spring-dashpot, 2 Hertz spring with damping; springs take their damping from k</source>
+        <translation>golvkontakt i den fysikaliska modellen: 0 impuls v1 = -k v0 (ekv. 2.3), 1 linjär fjäder med dämpare, 2 Hertz-fjäder med dämpning; fjädrarna får sin dämpning från k</translation>
+    </message>
+    <message>
+        <source>floor hit: bounce, no gravity in that step</source>
+        <translation>golvträff: studs, ingen gravitation i det steget</translation>
+    </message>
+    <message>
+        <source>floor hit: leave the floor with the new velocity</source>
+        <translation>golvträff: lämna golvet med den nya hastigheten</translation>
+    </message>
+    <message>
+        <source>frame</source>
+        <translation>bildruta</translation>
+    </message>
+    <message>
+        <source>free fall</source>
+        <translation>fritt fall</translation>
+    </message>
+    <message>
+        <source>free fall: position moves with the OLD velocity</source>
+        <translation>fritt fall: positionen flyttas med den GAMLA hastigheten</translation>
+    </message>
+    <message>
+        <source>free flight: gravity is the only force</source>
+        <translation>fri flykt: gravitationen är den enda kraften</translation>
+    </message>
+    <message>
+        <source>friction at floor and walls: an impact changes the velocity along the wall by at most mu times the change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)</source>
+        <translation>friktion vid golv och väggar: en stöt ändrar hastigheten längs väggen med högst mu gånger ändringen tvärs den; en boll som glider på golvet bromsas med mu g (0: friktionsfri)</translation>
+    </message>
+    <message>
+        <source>gravity per frame; the code subtracts 9.82/1000 from dy each frame</source>
+        <translation>gravitation per bildruta; koden drar av 9.82/1000 från dy varje bildruta</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>kg/m</source>
+        <translation>kg/m</translation>
+    </message>
+    <message>
+        <source>kg/s</source>
+        <translation>kg/s</translation>
+    </message>
+    <message>
+        <source>kg/step</source>
+        <translation>kg/steg</translation>
+    </message>
+    <message>
+        <source>kg/unit</source>
+        <translation>kg/enhet</translation>
+    </message>
+    <message>
+        <source>linear air drag on each ball, force -b v (0: none)</source>
+        <translation>linjärt luftmotstånd på varje boll, kraften -b v (0: inget)</translation>
+    </message>
+    <message>
+        <source>linear air drag, force -b v (0: none)</source>
+        <translation>linjärt luftmotstånd, kraften -b v (0: inget)</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>m/s^2</source>
+        <translation>m/s^2</translation>
+    </message>
+    <message>
+        <source>magnitude of gravity (down is -y)</source>
+        <translation>gravitationens belopp (nedåt är -y)</translation>
+    </message>
+    <message>
+        <source>magnitude of gravity; the report&apos;s code scales 9.82 to 0.0982 per step^2 with dt = 1</source>
+        <translation>gravitationens belopp; rapportens kod skalar 9.82 till 0.0982 per steg^2 med dt = 1</translation>
+    </message>
+    <message>
+        <source>mass of ball 1; momentum m1 v1 + m2 v2 is conserved in every collision</source>
+        <translation>massan för boll 1; rörelsemängden m1 v1 + m2 v2 bevaras i varje kollision</translation>
+    </message>
+    <message>
+        <source>mass of ball 2</source>
+        <translation>massan för boll 2</translation>
+    </message>
+    <message>
+        <source>mass of the ball; with drag it sets the terminal speed sqrt(m g / c)</source>
+        <translation>bollens massa; med luftmotstånd bestämmer den gränshastigheten sqrt(m g / c)</translation>
+    </message>
+    <message>
+        <source>momentum along the normal</source>
+        <translation>rörelsemängd längs normalen</translation>
+    </message>
+    <message>
+        <source>momentum is conserved (equal masses)</source>
+        <translation>rörelsemängden bevaras (lika massor)</translation>
+    </message>
+    <message>
+        <source>normal along the line of centres</source>
+        <translation>normal längs centrumlinjen</translation>
+    </message>
+    <message>
+        <source>number of balls (the report&apos;s figure shows 200)</source>
+        <translation>antal bollar (rapportens figur visar 200)</translation>
+    </message>
+    <message>
+        <source>position changes with velocity</source>
+        <translation>positionen ändras med hastigheten</translation>
+    </message>
+    <message>
+        <source>quadratic air drag on each ball, force -c |v| v (0: none)</source>
+        <translation>kvadratiskt luftmotstånd på varje boll, kraften -c |v| v (0: inget)</translation>
+    </message>
+    <message>
+        <source>quadratic air drag, force -c |v| v (0: none)</source>
+        <translation>kvadratiskt luftmotstånd, kraften -c |v| v (0: inget)</translation>
+    </message>
+    <message>
+        <source>report 1.2</source>
+        <translation>rapporten 1.2</translation>
+    </message>
+    <message>
+        <source>restitution along the normal</source>
+        <translation>studs längs normalen</translation>
+    </message>
+    <message>
+        <source>restitution of the velocity component normal to a wall or floor</source>
+        <translation>studskoefficient för hastighetskomponenten vinkelrät mot en vägg eller ett golv</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>seed of the random start positions, velocities and colours</source>
+        <translation>frö för de slumpade startpositionerna, hastigheterna och färgerna</translation>
+    </message>
+    <message>
+        <source>side of the box, centred at the origin; centres stay within box/2 - r of the centre</source>
+        <translation>kubens sida, centrerad i origo; centrumen håller sig inom box/2 - r från mitten</translation>
+    </message>
+    <message>
+        <source>side of the cubic box (corner at the origin)</source>
+        <translation>sidan av kuben (hörn i origo)</translation>
+    </message>
+    <message>
+        <source>smooth balls: tangential part kept</source>
+        <translation>släta bollar: den tangentiella delen behålls</translation>
+    </message>
+    <message>
+        <source>spring stiffness per unit mass (Hertz: per unit^1/2); 0 takes it from contact_time</source>
+        <translation>fjäderstyvhet per massenhet (Hertz: per enhet^1/2); 0 tar den från contact_time</translation>
+    </message>
+    <message>
+        <source>start height of the ball above the floor</source>
+        <translation>bollens starthöjd över golvet</translation>
+    </message>
+    <message>
+        <source>start position (x, y, z), y up</source>
+        <translation>startposition (x, y, z), y uppåt</translation>
+    </message>
+    <message>
+        <source>start velocity (x, y, z)</source>
+        <translation>starthastighet (x, y, z)</translation>
+    </message>
+    <message>
+        <source>start vertical velocity, up positive</source>
+        <translation>vertikal starthastighet, uppåt positiv</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>steg</translation>
+    </message>
+    <message>
+        <source>tangential parts kept</source>
+        <translation>de tangentiella delarna behålls</translation>
+    </message>
+    <message>
+        <source>that axis moves with the NEW velocity</source>
+        <translation>den axeln flyttas med den NYA hastigheten</translation>
+    </message>
+    <message>
+        <source>the remaining horizontal axis is unchanged</source>
+        <translation>den återstående horisontella axeln är oförändrad</translation>
+    </message>
+    <message>
+        <source>the report zeroes both velocities once more than this many contacts and swaps have happened</source>
+        <translation>rapporten nollställer båda hastigheterna när fler kontakter och byten än så har skett</translation>
+    </message>
+    <message>
+        <source>the report zeroes the ball once more than this many bounces have happened (against Zeno)</source>
+        <translation>rapporten nollställer bollen när fler studsar än så har skett (mot Zeno)</translation>
+    </message>
+    <message>
+        <source>the report zeroes the ball once more than this many floor and wall contacts have happened</source>
+        <translation>rapporten nollställer bollen när fler golv- och väggkontakter än så har skett</translation>
+    </message>
+    <message>
+        <source>the tangent</source>
+        <translation>tangenten</translation>
+    </message>
+    <message>
+        <source>two balls collide when their centres are closer than c r</source>
+        <translation>två bollar kolliderar när deras centrum är närmare än c r</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>enhet</translation>
+    </message>
+    <message>
+        <source>unit/frame^2</source>
+        <translation>enhet/bildruta^2</translation>
+    </message>
+    <message>
+        <source>unit/step</source>
+        <translation>enhet/steg</translation>
+    </message>
+    <message>
+        <source>unit/step^2</source>
+        <translation>enhet/steg^2</translation>
+    </message>
+    <message>
+        <source>v_rest = sqrt(2 g h_rest)</source>
+        <translation>v_rest = sqrt(2 g h_rest)</translation>
+    </message>
+    <message>
+        <source>y: gravity, Euler step</source>
+        <translation>y: gravitation, Euler-steg</translation>
+    </message>
+    <message>
+        <source>y: moves with the new velocity (semi-implicit)</source>
+        <translation>y: flyttas med den nya hastigheten (semi-implicit)</translation>
+    </message>
+    <message>
+        <source>z of a fixed tangent with x = y = 0.3</source>
+        <translation>z för en fast tangent med x = y = 0.3</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>--measure-frames needs the 3D view (an OpenGL platform)</source>
+        <translation>--measure-frames behöver 3D-vyn (en OpenGL-plattform)</translation>
+    </message>
+    <message>
+        <source>Bouncing and colliding balls, stage by stage.</source>
+        <translation>Studsande och kolliderande bollar, etapp för etapp.</translation>
+    </message>
+    <message>
+        <source>Start on stage KEY.</source>
+        <translation>Börja på etappen KEY.</translation>
+    </message>
+    <message>
+        <source>Set a constant, NAME=VALUE.</source>
+        <translation>Sätt en konstant, NAME=VALUE.</translation>
+    </message>
+    <message>
+        <source>Start playing.</source>
+        <translation>Börja spela.</translation>
+    </message>
+    <message>
+        <source>Play at X times real time (0.1 to 10).</source>
+        <translation>Spela med X gånger verklig tid (0.1 till 10).</translation>
+    </message>
+    <message>
+        <source>Play for S seconds, print frame times, quit.</source>
+        <translation>Spela i S sekunder, skriv ut bildtider, avsluta.</translation>
+    </message>
+    <message>
+        <source>--scene: unknown scene &apos;%1&apos;</source>
+        <translation>--scene: okänd etapp &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--set: the values were refused (see the window&apos;s status bar)</source>
+        <translation>--set: värdena avvisades (se fönstrets statusrad)</translation>
+    </message>
+    <message>
+        <source>--speed: %1 is outside [0.1, 10]</source>
+        <translation>--speed: %1 ligger utanför [0.1, 10]</translation>
+    </message>
+    <message>
+        <source>Open in lecture mode: full screen, large text, the step-by-step walk.</source>
+        <translation>Öppna i föreläsningsläge: helskärm, stor text, genomgången steg för steg.</translation>
+    </message>
+    <message>
+        <source>Colours: light, dark, high-contrast-light or high-contrast-dark.</source>
+        <translation>Färger: light, dark, high-contrast-light eller high-contrast-dark.</translation>
+    </message>
+    <message>
+        <source>--theme: unknown theme &apos;%1&apos;</source>
+        <translation>--theme: okänt tema &apos;%1&apos;</translation>
+    </message>
+</context>
+</TS>

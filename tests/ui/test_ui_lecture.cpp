@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: MIT
+// Lecture mode and the themes on the offscreen platform: the walk reveals a stage's
+// equations one at a time, then opens the next stage, and backward retraces it; the
+// clicker's keys drive it only in lecture mode; the themes set the palette and the
+// charts' colours (high-contrast text against its background above WCAG's 7:1); the
+// lecture scale enlarges fonts and chart lines without compounding; the colour-blind-safe
+// palette draws every coloured line in an Okabe-Ito colour.
+#include "ui/charts/motion_chart.h"
+#include "ui/lecture/lecture_mode.h"
+#include "ui/main_window.h"
+#include "ui/panels/stage_navigator.h"
+#include "ui/shell/window_shell.h"
+#include "ui/theme/theme.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QMenu>
+#include <QValueAxis>
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using ab::SceneId;
+using ab::ui::MainWindow;
+using ab::ui::StageNavigator;
+using ab::ui::Theme;
+
+namespace {
+
+// WCAG 2 relative luminance and contrast ratio (www.w3.org/TR/WCAG20/#relativeluminancedef).
+double luminance(const QColor& c)
+{
+    auto channel = [](double v) { return v <= 0.03928 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    return 0.2126 * channel(c.redF()) + 0.7152 * channel(c.greenF()) + 0.0722 * channel(c.blueF());
+}
+
+double contrast(const QColor& a, const QColor& b)
+{
+    const double la = luminance(a), lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+// Which of the stage's equations the navigator shows, by their formula and number.
+std::vector<bool> shownEquations(const StageNavigator& nav)
+{
+    std::vector<bool> shown;
+    const QString text = nav.text();
+    for (const ab::Equation& e : ab::sceneInfo(nav.current()).equations)
+        shown.push_back(text.contains(QStringLiteral("(%1)").arg(QString::fromStdString(e.number))) &&
+                        text.contains(QString::fromStdString(e.text)));
+    return shown;
+}
+
+std::vector<bool> firstShown(const StageNavigator& nav, int count)
+{
+    std::vector<bool> expected(ab::sceneInfo(nav.current()).equations.size(), false);
+    std::fill_n(expected.begin(), count, true);
+    return expected;
+}
+
+void activate(QWidget& w)
+{
+    w.show();
+    QApplication::setActiveWindow(&w);
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+}
+
+ab::ui::MotionChart* positionChart(MainWindow& w)
+{
+    return w.charts()->chart(ab::ui::ChartKind::Position);
+}
+
+} // namespace
+
+class UiLecture : public QObject {
+    Q_OBJECT
+private slots:
+    void walkRevealsEquationsOneAtATimeThenOpensTheNextStage()
+    {
+        MainWindow w;
+        ab::ui::LectureMode lecture;
+        lecture.attach(&w, w.navigator());
+        lecture.setActive(true);
+        StageNavigator& nav = *w.navigator();
+        QCOMPARE(nav.current(), SceneId::Bounce1d);
+        const int count = nav.equationCount();
+        QVERIFY(count >= 2);
+        for (int k = 0; k <= count; ++k) {
+            QCOMPARE(nav.revealed(), k);
+            QCOMPARE(shownEquations(nav), firstShown(nav, k));
+            QCOMPARE(nav.text().contains(QStringLiteral("Notes on the report")), k == count); // notes after the last
+            lecture.next();
+        }
+        QCOMPARE(nav.current(), SceneId::Box3d);
+        QCOMPARE(w.scene(), SceneId::Box3d); // the window runs the stage, not just the text
+        QCOMPARE(nav.revealed(), 0);
+        QCOMPARE(shownEquations(nav), firstShown(nav, 0));
+    }
+
+    void walkBackRetracesTheWalkForward()
+    {
+        MainWindow w;
+        ab::ui::LectureMode lecture;
+        lecture.attach(&w, w.navigator());
+        lecture.setActive(true);
+        StageNavigator& nav = *w.navigator();
+        const int count = nav.equationCount();
+        for (int k = 0; k < count + 2; ++k)
+            lecture.next(); // stage 2, first equation shown
+        QCOMPARE(nav.current(), SceneId::Box3d);
+        QCOMPARE(nav.revealed(), 1);
+        lecture.previous();
+        QCOMPARE(nav.revealed(), 0);
+        lecture.previous(); // back into stage 1 with every equation shown
+        QCOMPARE(nav.current(), SceneId::Bounce1d);
+        QCOMPARE(w.scene(), SceneId::Bounce1d);
+        QCOMPARE(nav.revealed(), count);
+        QCOMPARE(shownEquations(nav), firstShown(nav, count));
+        lecture.previous();
+        QCOMPARE(nav.revealed(), count - 1);
+        QCOMPARE(shownEquations(nav), firstShown(nav, count - 1));
+    }
+
+    void outsideTheWalkTheNavigatorShowsEveryEquation()
+    {
+        MainWindow w;
+        StageNavigator& nav = *w.navigator();
+        QVERIFY(!nav.walking());
+        QCOMPARE(nav.revealed(), nav.equationCount());
+        QCOMPARE(shownEquations(nav), firstShown(nav, nav.equationCount()));
+        nav.stepForward(); // a whole stage
+        QCOMPARE(nav.current(), SceneId::Box3d);
+    }
+
+    void clickerKeysDriveTheWalkInLectureModeOnly()
+    {
+        ab::ui::WindowShell shell;
+        MainWindow& w = shell.window();
+        activate(w);
+        StageNavigator& nav = *w.navigator();
+        // Outside lecture mode Space keeps its meaning (play / pause) and PageDown opens the next stage.
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(w.controller().playing());
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(!w.controller().playing());
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QCOMPARE(nav.current(), SceneId::Box3d);
+        QTest::keyClick(&w, Qt::Key_PageUp);
+        QCOMPARE(nav.current(), SceneId::Bounce1d);
+
+        shell.lecture().setActive(true);
+        QVERIFY(w.isFullScreen());
+        // A text field with the focus keeps Space and the arrows for typing; PageDown still walks.
+        QLineEdit* field = w.findChild<QLineEdit*>("param-k");
+        QVERIFY(field);
+        activate(w);                     // full screen may have moved the focus
+        QTRY_VERIFY(field->isVisible()); // a new row shows at the next event loop pass
+        field->setFocus();
+        QTRY_COMPARE(QApplication::focusWidget(), field);
+        QTest::keyClick(&w, Qt::Key_Right);
+        QCOMPARE(nav.revealed(), 0);
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QCOMPARE(nav.revealed(), 1);
+        field->clearFocus();
+        for (Qt::Key key : {Qt::Key_Space, Qt::Key_Right})
+            QTest::keyClick(&w, key);
+        QCOMPARE(nav.current(), SceneId::Bounce1d);
+        QCOMPARE(nav.revealed(), 3);
+        QVERIFY(!w.controller().playing()); // Space revealed; it did not play
+        QTest::keyClick(&w, Qt::Key_Left);
+        QTest::keyClick(&w, Qt::Key_PageUp);
+        QCOMPARE(nav.revealed(), 1);
+
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isFullScreen());
+        QTest::keyClick(&w, Qt::Key_F11);
+        QVERIFY(w.isFullScreen());
+        shell.lecture().setActive(false);
+        QVERIFY(!w.isFullScreen());
+        QVERIFY(!nav.walking());
+    }
+
+    void themesSetThePaletteAndTheCharts_data()
+    {
+        QTest::addColumn<Theme>("theme");
+        for (Theme t : ab::ui::allThemes())
+            QTest::newRow(qPrintable(ab::ui::themeKey(t))) << t;
+    }
+
+    void themesSetThePaletteAndTheCharts()
+    {
+        QFETCH(Theme, theme);
+        ab::ui::WindowShell shell;
+        shell.setTheme(theme);
+        const QPalette p = QApplication::palette();
+        QCOMPARE(p.color(QPalette::Window), ab::ui::themePalette(theme).color(QPalette::Window));
+        QCOMPARE(p.color(QPalette::Text), ab::ui::themePalette(theme).color(QPalette::Text));
+        QCOMPARE(luminance(p.color(QPalette::Window)) < 0.2, ab::ui::isDark(theme));
+        ab::ui::MotionChart* chart = positionChart(shell.window());
+        const ab::ui::SurfaceColours c = ab::ui::surfaceColours(theme);
+        QCOMPARE(chart->backgroundBrush().color(), c.background);
+        QCOMPARE(chart->titleBrush().color(), c.text);
+        for (QAbstractAxis* axis : chart->axes())
+            QCOMPARE(axis->labelsColor(), c.text);
+        const double textContrast = contrast(p.color(QPalette::Text), p.color(QPalette::Base));
+        const double chartContrast = contrast(c.text, c.background);
+        const double required = ab::ui::isHighContrast(theme) ? 7.0 : 4.5; // WCAG AAA and AA
+        QVERIFY2(textContrast >= required, qPrintable(QString::number(textContrast)));
+        QVERIFY2(chartContrast >= required, qPrintable(QString::number(chartContrast)));
+        shell.setTheme(Theme::Light);
+    }
+
+    void lectureModeScalesFontsAndLinesWithoutCompounding()
+    {
+        ab::ui::WindowShell shell;
+        ab::ui::MotionChart* chart = positionChart(shell.window());
+        const double appFont = QApplication::font().pointSizeF();
+        const double titleFont = chart->titleFont().pointSizeF();
+        const double labelFont = chart->axes().front()->labelsFont().pointSizeF();
+        const double lineWidth = chart->line(1)->pen().widthF();
+        for (int round = 0; round < 2; ++round) {
+            shell.lecture().setActive(true);
+            const double s = ab::ui::LectureMode::scale;
+            const double f = ab::ui::chartFontScale(shell.appearance());
+            QCOMPARE(shell.appearance().scale, s);
+            QVERIFY(f > 1.3);
+            QCOMPARE(QApplication::font().pointSizeF(), appFont * s);
+            QCOMPARE(chart->titleFont().pointSizeF(), titleFont * f);
+            QCOMPARE(chart->axes().front()->labelsFont().pointSizeF(), labelFont * f);
+            QCOMPARE(chart->line(1)->pen().widthF(), lineWidth * s);
+            shell.lecture().setActive(false);
+            QCOMPARE(QApplication::font().pointSizeF(), appFont);
+            QCOMPARE(chart->titleFont().pointSizeF(), titleFont);
+            QCOMPARE(chart->line(1)->pen().widthF(), lineWidth);
+        }
+    }
+
+    void colourBlindSafePaletteUsesOkabeItoColours()
+    {
+        ab::ui::WindowShell shell;
+        shell.window().showScene(SceneId::Box3d); // x, y and z lines
+        shell.setColourBlindSafe(true);
+        const auto& okabe = ab::ui::okabeIto();
+        std::set<QRgb> used;
+        for (ab::ui::ChartKind kind : ab::ui::allChartKinds()) {
+            ab::ui::MotionChart* chart = shell.window().charts()->chart(kind);
+            for (int i = 0; i < 3; ++i) {
+                const QColor c = chart->line(i)->pen().color();
+                QVERIFY2(std::find(okabe.begin(), okabe.end(), c) != okabe.end(), qPrintable(c.name()));
+                if (kind == ab::ui::ChartKind::Position)
+                    used.insert(c.rgb());
+            }
+        }
+        QCOMPARE(used.size(), std::size_t(3)); // x, y, z stay apart
+        const std::vector<unsigned> balls = ab::ui::okabeItoBallColours(20, Theme::HighContrastDark);
+        for (unsigned rgb : balls) {
+            QVERIFY(std::find(okabe.begin(), okabe.end(), QColor(QRgb(rgb))) != okabe.end());
+            QVERIFY(contrast(QColor(QRgb(rgb)), Qt::black) >= 3.0); // WCAG's figure for graphics
+        }
+        shell.setColourBlindSafe(false);
+        QCOMPARE(positionChart(shell.window())->line(0)->pen().color(), QColor(0xd6, 0x27, 0x28));
+    }
+};
+
+QTEST_MAIN(UiLecture)
+#include "test_ui_lecture.moc"

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: MIT
+#include "lecture_mode.h"
+
+#include "ui/panels/stage_navigator.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QPlainTextEdit>
+#include <QSplitter>
+#include <QTextEdit>
+
+namespace ab::ui {
+
+namespace {
+
+bool typingInFocus()
+{
+    QWidget* w = QApplication::focusWidget();
+    if (!w)
+        return false;
+    if (qobject_cast<QLineEdit*>(w) || qobject_cast<QAbstractSpinBox*>(w))
+        return true;
+    if (auto* edit = qobject_cast<QTextEdit*>(w))
+        return !edit->isReadOnly();
+    if (auto* edit = qobject_cast<QPlainTextEdit*>(w))
+        return !edit->isReadOnly();
+    return false;
+}
+
+} // namespace
+
+LectureMode::LectureMode(QObject* parent) : QObject(parent)
+{
+    qApp->installEventFilter(this); // F11 and Esc work in and out of lecture mode
+}
+
+LectureMode::~LectureMode()
+{
+    qApp->removeEventFilter(this);
+}
+
+void LectureMode::attach(QMainWindow* window, StageNavigator* navigator)
+{
+    window_ = window;
+    navigator_ = navigator;
+    desktopColumns_.clear();
+    desktopLeft_.clear();
+    if (navigator_)
+        navigator_->setWalking(active_);
+    if (active_) {
+        setFullScreen(true);
+        arrangePanels(true);
+    }
+}
+
+void LectureMode::setActive(bool on)
+{
+    if (on == active_)
+        return;
+    active_ = on;
+    if (navigator_)
+        navigator_->setWalking(on);
+    setFullScreen(on);
+    arrangePanels(on);
+    emit activeChanged(on);
+}
+
+void LectureMode::arrangePanels(bool lecture)
+{
+    // The walk is the lecture: the left column (navigator over the settings) takes a third
+    // of the width and the navigator most of that column. Proportions, not pixels:
+    // QSplitter shares its actual size out by them.
+    auto* columns = window_ ? qobject_cast<QSplitter*>(window_->centralWidget()) : nullptr;
+    auto* left = navigator_ ? qobject_cast<QSplitter*>(navigator_->parentWidget()) : nullptr;
+    auto arrange = [lecture](QSplitter* splitter, QList<int>& saved, const QList<int>& shares) {
+        if (!splitter || splitter->count() != shares.size())
+            return;
+        if (lecture) {
+            saved = splitter->sizes();
+            splitter->setSizes(shares);
+        } else if (!saved.isEmpty()) {
+            splitter->setSizes(saved);
+            saved.clear();
+        }
+    };
+    arrange(columns, desktopColumns_, {3200, 3800, 3000});
+    arrange(left, desktopLeft_, {7000, 3000});
+}
+
+void LectureMode::next()
+{
+    if (navigator_)
+        navigator_->stepForward();
+}
+
+void LectureMode::previous()
+{
+    if (navigator_)
+        navigator_->stepBack();
+}
+
+void LectureMode::setFullScreen(bool on)
+{
+    if (!window_ || window_->isFullScreen() == on)
+        return;
+    if (on)
+        window_->showFullScreen();
+    else
+        window_->showNormal();
+    emit fullScreenChanged(on);
+}
+
+LectureMode::Command LectureMode::commandFor(const QKeyEvent& key) const
+{
+    if (key.modifiers() & ~Qt::KeypadModifier)
+        return Command::None;
+    switch (key.key()) {
+    case Qt::Key_F11:
+        return Command::FullScreen;
+    case Qt::Key_Escape:
+        return window_ && window_->isFullScreen() ? Command::LeaveFullScreen : Command::None;
+    case Qt::Key_PageDown:
+        return active_ ? Command::Next : Command::None;
+    case Qt::Key_PageUp:
+        return active_ ? Command::Previous : Command::None;
+    case Qt::Key_Space:
+    case Qt::Key_Right:
+        return active_ && !typingInFocus() ? Command::Next : Command::None;
+    case Qt::Key_Left:
+        return active_ && !typingInFocus() ? Command::Previous : Command::None;
+    default:
+        return Command::None;
+    }
+}
+
+bool LectureMode::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+        return QObject::eventFilter(watched, event);
+    auto* key = static_cast<QKeyEvent*>(event);
+    const Command command = commandFor(*key);
+    if (command == Command::None || !window_ || !window_->isActiveWindow())
+        return QObject::eventFilter(watched, event);
+    key->accept();
+    if (event->type() == QEvent::ShortcutOverride)
+        return true; // claims the key from the window's shortcuts; it comes back as a KeyPress
+    switch (command) {
+    case Command::Next:
+        next();
+        break;
+    case Command::Previous:
+        previous();
+        break;
+    case Command::FullScreen:
+        setFullScreen(!window_->isFullScreen());
+        break;
+    case Command::LeaveFullScreen:
+        setFullScreen(false);
+        break;
+    case Command::None:
+        break;
+    }
+    return true;
+}
+
+} // namespace ab::ui
