@@ -88,7 +88,7 @@ QVariant StudyTableModel::data(const QModelIndex& index, int role) const
     case Impacts:
         return qs(r.method.impactsKey());
     case Dt:
-        return sort ? QVariant(r.dt) : QVariant(qs(formatNumber(r.dt)));
+        return sort ? QVariant(r.dt) : QVariant(QString::number(r.dt, 'g', 4));
     case MaxError:
         return sort ? QVariant(r.maxError) : QVariant(figure(r.maxError));
     case RelativeError:
@@ -243,7 +243,7 @@ QVariant StabilityTableModel::display(const stability::RowResult& r, int column)
     case ReferenceError:
         return figure(r.referenceError);
     case Dt:
-        return qs(formatNumber(r.dt));
+        return figure(r.dt);
     case CpuSeconds:
         return ran ? figure(r.cpuSeconds) : QString();
     case Note:

@@ -63,7 +63,7 @@ StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(paren
     auto* progressRow = new QHBoxLayout;
     progress_ = new QProgressBar;
     progress_->setFormat(tr("%v of %m rows"));
-    progress_->setValue(0);
+    progress_->setTextVisible(false); // until a run gives the count
     status_ = new QLabel(tr("Choose what to run and press Run."));
     progressRow->addWidget(progress_, 1);
     progressRow->addWidget(status_, 2);
@@ -77,7 +77,16 @@ StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(paren
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->verticalHeader()->setVisible(false);
+    table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     table_->setWordWrap(false);
+    // Widths for the usual contents: the setting says most about a row.
+    using M = StabilityTableModel;
+    const std::pair<int, int> widths[] = {
+        {M::Case, 115},         {M::Model, 70},           {M::Integrator, 125},  {M::Setting, 330},
+        {M::VerdictColumn, 95}, {M::EnergyGain, 120},     {M::Penetration, 120}, {M::Escaped, 65},
+        {M::Nonfinite, 75},     {M::ReferenceError, 115}, {M::Dt, 70},           {M::CpuSeconds, 95}};
+    for (const auto& [column, width] : widths)
+        table_->setColumnWidth(column, width);
     layout->addWidget(table_, 1);
     layout->addWidget(buildLegend());
 
@@ -98,7 +107,7 @@ StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(paren
         progress_->setValue(done);
     });
     setRunning(false);
-    resize(1200, 720);
+    resize(1560, 760);
 }
 
 QWidget* StabilityDialog::buildControls()
@@ -191,6 +200,7 @@ void StabilityDialog::start()
     model_->clear();
     progress_->setValue(0);
     progress_->setMaximum(0); // busy until the rows are known
+    progress_->setTextVisible(true);
     status_->setText(tr("Running..."));
     auto out = std::make_shared<Outcome>();
     connect(

@@ -80,7 +80,7 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     auto* progressRow = new QHBoxLayout;
     progress_ = new QProgressBar;
     progress_->setFormat(tr("%v of %m runs"));
-    progress_->setValue(0);
+    progress_->setTextVisible(false); // until a run gives the count
     status_ = new QLabel(tr("Press Run to start."));
     progressRow->addWidget(progress_, 1);
     progressRow->addWidget(status_, 2);
@@ -88,7 +88,7 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
 
     chart_ = new QChartView;
     chart_->setRenderHint(QPainter::Antialiasing);
-    chart_->setMinimumHeight(260);
+    chart_->setMinimumHeight(420); // a log axis of 16 decades elides its labels when shorter
     model_ = new StudyTableModel(this);
     model_->setUnits(qs(info.timeUnit), qs(info.lengthUnit));
     auto* sorter = new QSortFilterProxyModel(this);
@@ -100,11 +100,11 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     table_->sortByColumn(-1, Qt::AscendingOrder); // the order they ran in until a header is clicked
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->verticalHeader()->setVisible(false);
+    table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     auto* split = new QSplitter(Qt::Vertical);
     split->addWidget(chart_);
     split->addWidget(table_);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    split->setSizes({480, 220});
     layout->addWidget(split, 1);
 
     auto* buttons = new QHBoxLayout;
@@ -125,7 +125,7 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     });
     clearChart();
     setRunning(false);
-    resize(980, 760);
+    resize(1000, 900);
 }
 
 QWidget* StudyDialog::buildUnavailable()
@@ -235,6 +235,7 @@ void StudyDialog::start()
     model_->clear();
     clearChart();
     progress_->setMaximum(static_cast<int>(o.dts.size() * o.methods.size()));
+    progress_->setTextVisible(true);
     progress_->setValue(0);
     status_->setText(tr("Running..."));
     auto out = std::make_shared<study::Result>();
