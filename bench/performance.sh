@@ -59,14 +59,19 @@ load bullet-100k
 load end
 
 # Every row in one CSV: the columns of both tools, by name, with the table each came from.
+# The Bullet comparison's rows name their engine; its own are the physical model on the grid.
 awk -F, -v OFS=, '
   BEGIN { n = split("table,balls,model,engine,broadphase,threads,ns_per_ball_step,steps_per_second," \
                     "cpu_ns_per_ball_step,engine_mib,peak_rss_mib,kinetic_energy_at_end", cols, ","); }
   FNR == 1 { delete at; for (i = 1; i <= NF; ++i) at[$i] = i; table = FILENAME; sub(/.*\//, "", table);
              sub(/\.csv$/, "", table); if (NR == 1) { line = cols[1]; for (c = 2; c <= n; ++c) line = line OFS cols[c];
              print line; } next }
-  { line = table; for (c = 2; c <= n; ++c) { v = (cols[c] in at) ? $(at[cols[c]]) : "";
-      if (cols[c] == "engine" && v == "") v = "amazeballs"; line = line OFS v; } print line }' \
+  { engine = ("engine" in at) ? $(at["engine"]) : "amazeballs"; bullet = engine == "bullet"; line = table;
+    for (c = 2; c <= n; ++c) { v = (cols[c] in at) ? $(at[cols[c]]) : "";
+      if (cols[c] == "engine") v = engine;
+      else if (cols[c] == "model" && v == "") v = bullet ? "bullet-3.24" : "physical";
+      else if (cols[c] == "broadphase" && v == "") v = bullet ? "dbvt" : "grid";
+      line = line OFS v; } print line }' \
   "$out"/physical-1.csv "$out"/physical-2.csv "$out"/report-grid.csv "$out"/report-all-pairs.csv \
   "$out"/bullet-small.csv "$out"/bullet-100k.csv >"$out/performance.csv"
 cat "$out/machine.txt"
