@@ -175,7 +175,6 @@ void PresetActions::addPresetsMenu(QMenuBar* bar)
         const QString key = qs(b.key);
         QAction* action = menu->addAction(qs(b.preset.name), this, [this, key] { open(key); });
         action->setToolTip(qs(b.preset.description));
-        action->setStatusTip(qs(b.preset.description));
         action->setData(key);
     }
 }
