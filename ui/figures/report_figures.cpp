@@ -156,13 +156,14 @@ std::vector<Panel> panelsOf(const FigureData& d)
         return out;
     };
     if (d.figure == ReportFigure::Bounce1d)
-        return {{ReportFigures::tr("Position"), time, ReportFigures::tr("height y (%1)").arg(qs(info.lengthUnit)), &d.t, component(d.p, 1)},
+        return {{ReportFigures::tr("Position"), time, ReportFigures::tr("height y (%1)").arg(qs(info.lengthUnit)), &d.t,
+                 component(d.p, 1)},
                 {ReportFigures::tr("Velocity"), time, ReportFigures::tr("v (%1)").arg(speed), &d.t, component(d.v, 1)}};
     std::vector<Panel> panels;
     const char* names[] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a)
-        panels.push_back({ReportFigures::tr("Velocity along %1").arg(QLatin1String(names[a])), time, ReportFigures::tr("v%1 (%2)").arg(QLatin1String(names[a]), speed), &d.t,
-                          component(d.v, a)});
+        panels.push_back({ReportFigures::tr("Velocity along %1").arg(QLatin1String(names[a])), time,
+                          ReportFigures::tr("v%1 (%2)").arg(QLatin1String(names[a]), speed), &d.t, component(d.v, a)});
     return panels;
 }
 
@@ -333,8 +334,7 @@ void paintBalls(QPainter& p, const QRectF& area, const FigureData& d)
     const State& s = d.last;
     std::vector<int> order(static_cast<std::size_t>(s.size()));
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return cam.depth(s.p.col(a)) > cam.depth(s.p.col(b)); });
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return cam.depth(s.p.col(a)) > cam.depth(s.p.col(b)); });
     p.setPen(Qt::NoPen);
     for (int i : order) {
         const Eigen::Vector3d c = s.p.col(i);
@@ -358,12 +358,13 @@ void paintTitleAndCaption(QPainter& p, const QRectF& area, const FigureData& d, 
     const QFontMetricsF fm(p.font());
     const double h = fm.height();
     const SceneInfo& info = sceneInfo(d.spec.scene);
-    const QString source = ReportFigures::tr("Redrawn from the report model with the report's constants: stage %1, %2 steps "
-                              "of %3 %4.")
-                               .arg(info.stage)
-                               .arg(d.steps)
-                               .arg(info.reportDt)
-                               .arg(qs(info.timeUnit));
+    const QString source =
+        ReportFigures::tr("Redrawn from the report model with the report's constants: stage %1, %2 steps "
+                          "of %3 %4.")
+            .arg(info.stage)
+            .arg(d.steps)
+            .arg(info.reportDt)
+            .arg(qs(info.timeUnit));
     const QRectF captionBox(area.left() + h, area.bottom() - 3.2 * h, area.width() - 2 * h, 3.0 * h);
     p.setPen(ink);
     QFont italic = p.font();
@@ -382,8 +383,7 @@ void writeImage(const QString& path, QSize size, const QString& title,
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != "png" && suffix != "svg")
-        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() +
-                         "' (use .png or .svg)");
+        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() + "' (use .png or .svg)");
     checkWritable(path.toStdString());
     QSaveFile file(path); // a temporary file renamed into place on commit()
     if (!file.open(QIODevice::WriteOnly))
