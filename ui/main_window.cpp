@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "main_window.h"
 
-#include "charts/chart_export.h"
 #include "about_box.h"
+#include "charts/chart_export.h"
 #include "export_files.h"
 #include "figures/figure_actions.h"
 #include "i18n/core_text.h"

@@ -122,13 +122,16 @@ private slots:
         const QByteArray head = R"({"format": "amazeballs-preset", "version": 1, "name": "x", )";
         QTest::newRow("restitution above 1") << head + R"("scene": "box3d", "model": "physical", "params": {"k": 1.5}})"
                                              << "params.k";
-        QTest::newRow("unknown integrator") << head + R"("scene": "box3d", "model": "physical", "integrator": "leapfrog"})"
-                                            << "integrator";
-        QTest::newRow("negative step") << head + R"("scene": "bounce1d", "model": "report", "dt": -1})" << "dt";
+        QTest::newRow("unknown integrator")
+            << head + R"("scene": "box3d", "model": "physical", "integrator": "leapfrog"})"
+            << "integrator";
+        QTest::newRow("negative step") << head + R"("scene": "bounce1d", "model": "report", "dt": -1})"
+                                       << "dt";
         QTest::newRow("unknown chart") << head + R"("scene": "box3d", "model": "report", "view": {"charts": ["spin"]}})"
                                        << "view.charts[0]";
         QTest::newRow("ball out of range")
-            << head + R"("scene": "two-balls", "model": "report", "view": {"selected_ball": 2}})" << "selected_ball";
+            << head + R"("scene": "two-balls", "model": "report", "view": {"selected_ball": 2}})"
+            << "selected_ball";
         QTest::newRow("malformed json") << QByteArray(R"({"format": "amazeballs-preset", "version": 1,)") << "line";
         QTest::newRow("newer version") << QByteArray(R"({"format": "amazeballs-preset", "version": 7})") << "version";
     }
@@ -212,8 +215,9 @@ private slots:
                 continue;
             }
             keys << a->data().toString();
-            const auto& b = *std::find_if(ab::builtinPresets().begin(), ab::builtinPresets().end(),
-                                          [&](const ab::BuiltinPreset& p) { return p.key == a->data().toString().toStdString(); });
+            const auto& b =
+                *std::find_if(ab::builtinPresets().begin(), ab::builtinPresets().end(),
+                              [&](const ab::BuiltinPreset& p) { return p.key == a->data().toString().toStdString(); });
             QCOMPARE(a->toolTip(), QString::fromStdString(b.preset.description));
         }
         QCOMPARE(keys.size(), qsizetype(ab::builtinPresets().size()));

@@ -90,9 +90,9 @@ void drawPanel(QPainter& p, const QRectF& area, const Panel& panel)
     const QRectF plot = area.adjusted(fm.horizontalAdvance("-00000") + 2.0 * h, 1.6 * h, -h, -2.4 * h);
     const auto [x0, x1] = finiteRange(*panel.x);
     auto [y0, y1] = finiteRange(panel.y);
-    const double pad = 0.05 * (y1 - y0);
-    y0 -= pad;
-    y1 += pad;
+    const double tick = niceTickStep(y1 - y0, 5); // the value axis ends on ticks
+    y0 = std::floor(y0 / tick) * tick;
+    y1 = std::ceil(y1 / tick) * tick;
     const auto at = [&](double x, double y) {
         return QPointF(plot.left() + (x - x0) / (x1 - x0) * plot.width(),
                        plot.bottom() - (y - y0) / (y1 - y0) * plot.height());
@@ -105,7 +105,7 @@ void drawPanel(QPainter& p, const QRectF& area, const Panel& panel)
                    QString::number(t, 'g', 6));
         p.setPen(QPen(grid, 1.0));
     }
-    for (double t : ticks(y0, y1, 5)) {
+    for (double t : ticks(y0, y1, 5)) { // the same step as `tick`: same span, same count
         p.drawLine(at(x0, t), at(x1, t));
         p.setPen(ink);
         p.drawText(QRectF(plot.left() - 6.3 * h, at(x0, t).y() - 0.5 * h, 6 * h, h), Qt::AlignRight | Qt::AlignVCenter,
@@ -156,13 +156,14 @@ std::vector<Panel> panelsOf(const FigureData& d)
         return out;
     };
     if (d.figure == ReportFigure::Bounce1d)
-        return {{ReportFigures::tr("Position"), time, ReportFigures::tr("height y (%1)").arg(qs(info.lengthUnit)), &d.t, component(d.p, 1)},
+        return {{ReportFigures::tr("Position"), time, ReportFigures::tr("height y (%1)").arg(qs(info.lengthUnit)), &d.t,
+                 component(d.p, 1)},
                 {ReportFigures::tr("Velocity"), time, ReportFigures::tr("v (%1)").arg(speed), &d.t, component(d.v, 1)}};
     std::vector<Panel> panels;
     const char* names[] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a)
-        panels.push_back({ReportFigures::tr("Velocity along %1").arg(QLatin1String(names[a])), time, ReportFigures::tr("v%1 (%2)").arg(QLatin1String(names[a]), speed), &d.t,
-                          component(d.v, a)});
+        panels.push_back({ReportFigures::tr("Velocity along %1").arg(QLatin1String(names[a])), time,
+                          ReportFigures::tr("v%1 (%2)").arg(QLatin1String(names[a]), speed), &d.t, component(d.v, a)});
     return panels;
 }
 
@@ -237,32 +238,42 @@ void drawBox(QPainter& p, const Camera& cam, const Fit& fit, const Eigen::Aligne
                            fit(cam.image(box.corner(Eigen::AlignedBox3d::CornerType(b)))));
 }
 
-// Tick labels along the box's three edges from its lowest corner, MATLAB-style.
+// Tick labels along three bottom or vertical edges of the box, on the sides facing the
+// eye (x along the front, z along the near side, y up the far vertical), MATLAB-style.
 void drawAxes(QPainter& p, const Camera& cam, const Fit& fit, const Eigen::AlignedBox3d& box, const QString& unit)
 {
     const QFontMetricsF fm(p.font());
     const double h = fm.height();
+    const Eigen::Vector3d lo = box.min(), hi = box.max(), size = hi - lo;
+    const auto near = [&](int a) { return cam.eye[a] > box.center()[a] ? hi[a] : lo[a]; };
+    const auto outward = [&](int a) { return (cam.eye[a] > box.center()[a] ? 1.0 : -1.0) * 0.07 * size[a]; };
+    struct Edge {
+        int axis;
+        Eigen::Vector3d base, offset; // a point of the edge (its own axis free) and where labels go
+    };
+    const Edge edges[] = {
+        {0, {0, lo.y(), near(2)}, {0, 0, outward(2)}},
+        {2, {near(0), lo.y(), 0}, {outward(0), 0, 0}},
+        {1, {lo.x() + hi.x() - near(0), 0, near(2)}, {-outward(0), 0, 0}},
+    };
     const char* names[] = {"x", "y", "z"};
     p.setPen(ink);
-    for (int axis = 0; axis < 3; ++axis) {
-        const double lo = box.min()[axis], hi = box.max()[axis];
-        Eigen::Vector3d outward = Eigen::Vector3d::Zero(); // labels sit off the box
-        outward[axis == 1 ? 0 : 2 - axis] = -0.08 * (box.max() - box.min())[axis == 1 ? 0 : 2 - axis];
-        for (double t : ticks(lo, hi, 3)) {
-            Eigen::Vector3d x = box.min() + outward;
-            x[axis] = t;
+    for (const Edge& e : edges) {
+        for (double t : ticks(lo[e.axis], hi[e.axis], 3)) {
+            Eigen::Vector3d x = e.base + e.offset;
+            x[e.axis] = t;
             const QPointF at = fit(cam.image(x));
             p.drawText(QRectF(at.x() - 3 * h, at.y() - 0.5 * h, 6 * h, h), Qt::AlignCenter, QString::number(t));
         }
-        Eigen::Vector3d mid = box.min() + 2.2 * outward;
-        mid[axis] = (lo + hi) / 2;
+        Eigen::Vector3d mid = e.base + 2.4 * e.offset;
+        mid[e.axis] = (lo[e.axis] + hi[e.axis]) / 2;
         const QPointF at = fit(cam.image(mid));
         QFont bold = p.font();
         bold.setBold(true);
         p.save();
         p.setFont(bold);
         p.drawText(QRectF(at.x() - 4 * h, at.y() - 0.5 * h, 8 * h, h), Qt::AlignCenter,
-                   QStringLiteral("%1 (%2)").arg(QLatin1String(names[axis]), unit));
+                   QStringLiteral("%1 (%2)").arg(QLatin1String(names[e.axis]), unit));
         p.restore();
     }
 }
@@ -271,8 +282,8 @@ void paintTrajectory(QPainter& p, const QRectF& area, const FigureData& d)
 {
     const SceneLayout layout = layoutFor(d.spec);
     const Eigen::AlignedBox3d& box = layout.region;
-    // MATLAB's default 3D view (azimuth -37.5, elevation 30), here with y up.
-    const Camera cam(box.center(), -37.5 + 180.0, 30.0, 1.0, false);
+    // Seen from the front right and above, y up: x runs to the right, z towards the reader.
+    const Camera cam(box.center(), -50.0, 25.0, 3.0 * box.diagonal().norm(), false);
     const Fit fit(cam, box, area.adjusted(area.width() * 0.05, 0, -area.width() * 0.05, 0));
     drawBox(p, cam, fit, box);
     drawAxes(p, cam, fit, box, qs(sceneInfo(d.spec.scene).lengthUnit));
@@ -296,20 +307,21 @@ void paintTrajectory(QPainter& p, const QRectF& area, const FigureData& d)
     p.drawEllipse(stop, h / 4, h / 4);
     p.setPen(ink);
     p.drawText(start + QPointF(h / 2, -h / 3), ReportFigures::tr("start"));
-    if (d.halt)
-        p.drawText(stop + QPointF(h / 2, h), ReportFigures::tr("stopped by the counter, t = %1 %2")
-                                                 .arg(d.t[end - 1])
-                                                 .arg(qs(sceneInfo(d.spec.scene).timeUnit)));
+    if (d.halt) // to the left of the stop, clear of the path that comes in from the walls
+        p.drawText(QRectF(stop.x() - 30 * h, stop.y() - 1.4 * h, 29.5 * h, h), Qt::AlignRight | Qt::AlignVCenter,
+                   ReportFigures::tr("stopped by the counter, t = %1 %2")
+                       .arg(d.t[end - 1])
+                       .arg(qs(sceneInfo(d.spec.scene).timeUnit)));
 }
 
 void paintBalls(QPainter& p, const QRectF& area, const FigureData& d)
 {
     const SceneLayout layout = layoutFor(d.spec);
     const Eigen::AlignedBox3d& box = layout.region;
-    // The report's WebGL camera stands at (100, 50, 50) from the centre (Appendix D).
-    const Eigen::Vector3d eye(100, 50, 50);
-    const Camera cam(box.center(), std::atan2(eye.x(), eye.z()) * 180.0 / std::numbers::pi,
-                     std::asin(eye.y() / eye.norm()) * 180.0 / std::numbers::pi, eye.norm(), true);
+    // From the side the report's WebGL camera stands on ((100, 50, 50) from the centre,
+    // Appendix D: yaw 63 degrees), higher and farther, so that the eye is not in the plane
+    // of the box's top face, which would fold the top edges onto one line.
+    const Camera cam(box.center(), 63.0, 30.0, 2.4 * box.sizes().maxCoeff(), true);
     const Fit fit(cam, box, area);
     // The floor, lightly filled, then the box's edges, then the balls far to near.
     QPolygonF floor;
@@ -322,8 +334,7 @@ void paintBalls(QPainter& p, const QRectF& area, const FigureData& d)
     const State& s = d.last;
     std::vector<int> order(static_cast<std::size_t>(s.size()));
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return cam.depth(s.p.col(a)) > cam.depth(s.p.col(b)); });
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return cam.depth(s.p.col(a)) > cam.depth(s.p.col(b)); });
     p.setPen(Qt::NoPen);
     for (int i : order) {
         const Eigen::Vector3d c = s.p.col(i);
@@ -347,12 +358,13 @@ void paintTitleAndCaption(QPainter& p, const QRectF& area, const FigureData& d, 
     const QFontMetricsF fm(p.font());
     const double h = fm.height();
     const SceneInfo& info = sceneInfo(d.spec.scene);
-    const QString source = ReportFigures::tr("Redrawn from the report model with the report's constants: stage %1, %2 steps "
-                              "of %3 %4.")
-                               .arg(info.stage)
-                               .arg(d.steps)
-                               .arg(info.reportDt)
-                               .arg(qs(info.timeUnit));
+    const QString source =
+        ReportFigures::tr("Redrawn from the report model with the report's constants: stage %1, %2 steps "
+                          "of %3 %4.")
+            .arg(info.stage)
+            .arg(d.steps)
+            .arg(info.reportDt)
+            .arg(qs(info.timeUnit));
     const QRectF captionBox(area.left() + h, area.bottom() - 3.2 * h, area.width() - 2 * h, 3.0 * h);
     p.setPen(ink);
     QFont italic = p.font();
@@ -371,8 +383,7 @@ void writeImage(const QString& path, QSize size, const QString& title,
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != "png" && suffix != "svg")
-        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() +
-                         "' (use .png or .svg)");
+        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() + "' (use .png or .svg)");
     checkWritable(path.toStdString());
     QSaveFile file(path); // a temporary file renamed into place on commit()
     if (!file.open(QIODevice::WriteOnly))

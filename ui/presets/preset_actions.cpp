@@ -65,8 +65,7 @@ void placeCamera(BallView& view, const PresetView& v)
         return;
     }
     const OrbitCamera& c = view.camera();
-    const Eigen::Vector3d t =
-        v.cameraTarget.value_or(Eigen::Vector3d(c.target().x(), c.target().y(), c.target().z()));
+    const Eigen::Vector3d t = v.cameraTarget.value_or(Eigen::Vector3d(c.target().x(), c.target().y(), c.target().z()));
     view.setCameraPose(QVector3D(float(t.x()), float(t.y()), float(t.z())), float(v.cameraYaw.value_or(c.yaw())),
                        float(v.cameraPitch.value_or(c.pitch())), float(v.cameraDistance.value_or(c.distance())));
 }
@@ -92,8 +91,7 @@ QString describe(const RunSpec& spec, long long steps)
                        .arg(qs(info.title), qs(std::string(modelKey(spec.model))));
     if (spec.model == ModelKind::Physical)
         text += PresetActions::tr(", %1 integrator, impacts %2")
-                    .arg(qs(std::string(integratorKey(spec.integrator))),
-                         qs(std::string(impactModeKey(spec.impacts))));
+                    .arg(qs(std::string(integratorKey(spec.integrator))), qs(std::string(impactModeKey(spec.impacts))));
     if (spec.dt)
         text += PresetActions::tr(", step %1 %2").arg(*spec.dt).arg(qs(info.timeUnit));
     return text + PresetActions::tr(", %1 steps.").arg(steps);
@@ -175,7 +173,6 @@ void PresetActions::addPresetsMenu(QMenuBar* bar)
         const QString key = qs(b.key);
         QAction* action = menu->addAction(qs(b.preset.name), this, [this, key] { open(key); });
         action->setToolTip(qs(b.preset.description));
-        action->setStatusTip(qs(b.preset.description));
         action->setData(key);
     }
 }
@@ -227,8 +224,8 @@ std::optional<QString> PresetActions::open(const QString& nameOrPath)
 void PresetActions::saveTo(const QString& path)
 {
     const std::string name = QFileInfo(path).completeBaseName().toStdString();
-    const Preset preset =
-        capturePreset(*window_, name, describe(window_->controller().spec(), window_->controller().plannedSteps()).toStdString());
+    const Preset preset = capturePreset(
+        *window_, name, describe(window_->controller().spec(), window_->controller().plannedSteps()).toStdString());
     try {
         savePreset(path.toStdString(), preset);
     } catch (const std::logic_error& e) { // text that would not read back: said, not written
@@ -238,7 +235,8 @@ void PresetActions::saveTo(const QString& path)
 
 void PresetActions::openInteractively()
 {
-    const QString path = QFileDialog::getOpenFileName(window_, tr("Open preset"), lastDirectory_.isEmpty() ? QDir::currentPath() : lastDirectory_,
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Open preset"),
+                                                      lastDirectory_.isEmpty() ? QDir::currentPath() : lastDirectory_,
                                                       tr("Amazeballs preset (*.json)"));
     if (path.isEmpty())
         return;
@@ -273,7 +271,8 @@ bool PresetActions::eventFilter(QObject* watched, QEvent* event)
         return QObject::eventFilter(watched, event);
     auto* drop = static_cast<QDropEvent*>(event); // drag enter and move events are drop events
     const QList<QUrl> urls = drop->mimeData() ? drop->mimeData()->urls() : QList<QUrl>();
-    if (urls.size() != 1 || !urls.front().isLocalFile() || !urls.front().toLocalFile().endsWith(".json", Qt::CaseInsensitive))
+    if (urls.size() != 1 || !urls.front().isLocalFile() ||
+        !urls.front().toLocalFile().endsWith(".json", Qt::CaseInsensitive))
         return false;
     drop->acceptProposedAction();
     if (type == QEvent::Drop)
