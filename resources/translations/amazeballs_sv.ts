@@ -2,6 +2,106 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sv_SE">
 <context>
+    <name>AboutBox</name>
+    <message>
+        <source>&lt;h3&gt;Amazeballs %1&lt;/h3&gt;&lt;p&gt;Bouncing and colliding balls, stage by stage: a teaching tool that rebuilds the student report beside textbook physics.&lt;/p&gt;&lt;p&gt;Built on the report &lt;i&gt;Amazeballs&lt;/i&gt; (Modelling project TNM085, Linköping University, 13 March 2014) by &lt;b&gt;Sofie Lindblom&lt;/b&gt;, &lt;b&gt;Anton Arbring&lt;/b&gt; and &lt;b&gt;David Lindh&lt;/b&gt;; examiner Anna Lombardi. Its four stages, equations, constants and Figures 2.5, 2.6, 2.7 and 3.1 are reproduced here as the report gives them.&lt;/p&gt;&lt;p&gt;Licensed under the MIT licence.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Amazeballs %1&lt;/h3&gt;&lt;p&gt;Studsande och kolliderande bollar, etapp för etapp: ett undervisningsverktyg som återskapar studentrapporten sida vid sida med lärobokens fysik.&lt;/p&gt;&lt;p&gt;Bygger på rapporten &lt;i&gt;Amazeballs&lt;/i&gt; (Modelleringsprojekt TNM085, Linköpings universitet, 13 mars 2014) av &lt;b&gt;Sofie Lindblom&lt;/b&gt;, &lt;b&gt;Anton Arbring&lt;/b&gt; och &lt;b&gt;David Lindh&lt;/b&gt;; examinator Anna Lombardi. Rapportens fyra etapper, ekvationer, konstanter och figurerna 2.5, 2.6, 2.7 och 3.1 återges här så som rapporten anger dem.&lt;/p&gt;&lt;p&gt;Licensierad under MIT-licensen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>About Amazeballs</source>
+        <translation>Om Amazeballs</translation>
+    </message>
+</context>
+<context>
+    <name>QMainWindow</name>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>Verk&amp;tyg</translation>
+    </message>
+    <message>
+        <source>&amp;Accuracy study...</source>
+        <translation>&amp;Noggrannhetsstudie...</translation>
+    </message>
+    <message>
+        <source>Error against run time of each integrator on the current scene</source>
+        <translation>Fel mot beräkningstid för varje integrator i den aktuella etappen</translation>
+    </message>
+    <message>
+        <source>&amp;Stability suite...</source>
+        <translation>&amp;Stabilitetstester...</translation>
+    </message>
+    <message>
+        <source>Stiff and extreme cases of both models, with a verdict for each</source>
+        <translation>Styva och extrema fall för båda modellerna, med en bedömning av vart och ett</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+</context>
+<context>
+    <name>ReportFigures</name>
+    <message>
+        <source>t (%1)</source>
+        <translation>t (%1)</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>height y (%1)</source>
+        <translation>höjd y (%1)</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Hastighet</translation>
+    </message>
+    <message>
+        <source>v (%1)</source>
+        <translation>v (%1)</translation>
+    </message>
+    <message>
+        <source>Velocity along %1</source>
+        <translation>Hastighet i %1-led</translation>
+    </message>
+    <message>
+        <source>v%1 (%2)</source>
+        <translation>v%1 (%2)</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>startpunkt</translation>
+    </message>
+    <message>
+        <source>stopped by the counter, t = %1 %2</source>
+        <translation>stoppad av räknaren, t = %1 %2</translation>
+    </message>
+    <message>
+        <source>Redrawn from the report model with the report&apos;s constants: stage %1, %2 steps of %3 %4.</source>
+        <translation>Omritad från rapportmodellen med rapportens konstanter: etapp %1, %2 steg om %3 %4.</translation>
+    </message>
+    <message>
+        <source>Figure 2.5: Velocity and position of a bouncing ball in 1D</source>
+        <translation>Figur 2.5: Hastighet och position för studsboll i 1D</translation>
+    </message>
+    <message>
+        <source>Figure 2.6: Position of the ball in 3D</source>
+        <translation>Figur 2.6: Bollens position i 3D</translation>
+    </message>
+    <message>
+        <source>Figure 2.7: The ball&apos;s velocity along x, y and z</source>
+        <translation>Figur 2.7: Bollens hastighet i x-, y- respektive z-led</translation>
+    </message>
+    <message>
+        <source>Figure 3.1: Final simulation of 200 balls</source>
+        <translation>Figur 3.1: Slutlig simulering av 200 bollar</translation>
+    </message>
+</context>
+<context>
     <name>SceneGeometry</name>
     <message>
         <source>y (%1)</source>
@@ -75,6 +175,40 @@
     <message>
         <source>Export the chart data as CSV...</source>
         <translation>Exportera diagrammens data som CSV...</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::FigureActions</name>
+    <message>
+        <source>F&amp;igures</source>
+        <translation>F&amp;igurer</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::FigureDialog</name>
+    <message>
+        <source>Export PNG...</source>
+        <translation>Exportera PNG...</translation>
+    </message>
+    <message>
+        <source>Export SVG...</source>
+        <translation>Exportera SVG...</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG-bild (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-bild (*.png)</translation>
+    </message>
+    <message>
+        <source>Export figure</source>
+        <translation>Exportera figur</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Exporten misslyckades</translation>
     </message>
 </context>
 <context>
@@ -246,8 +380,12 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mellanslag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;spela / pausa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Högerpil&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ett steg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ körningen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;långsammare / snabbare&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1 - 4&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rapportens etapper; PgUp / PgDn: föregående / nästa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+E&lt;/b&gt;&lt;/td&gt;&lt;td&gt;exportera aktuellt diagram (Ctrl+Shift+E: dess data som CSV)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ 3D-vyn; T: snurrbord&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td colspan=2&gt;&lt;br&gt;&lt;b&gt;3D-vyn&lt;/b&gt;: dra med vänster knapp för att kretsa, med höger eller mittknapp (eller Shift+vänster) för att panorera, hjulet zoomar, ett klick väljer en boll, ett dubbelklick på tom yta återställer vyn. Efter ett klick i vyn flyttar piltangenterna kameran som i rapportens WebGL-program; Esc lämnar tillbaka dem till uppspelningen.&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Amazeballs&lt;/b&gt; %1&lt;br&gt;Bouncing and colliding balls: the 2014 student report &quot;Amazeballs&quot; (Linköping University, TNM085) rebuilt as a teaching tool, stage by stage.</source>
-        <translation>&lt;b&gt;Amazeballs&lt;/b&gt; %1&lt;br&gt;Studsande och kolliderande bollar: studentrapporten &quot;Amazeballs&quot; från 2014 (Linköpings universitet, TNM085) återskapad som ett undervisningsverktyg, etapp för etapp.</translation>
+        <source>Writing %1</source>
+        <translation>Skriver %1</translation>
+    </message>
+    <message>
+        <source>Export cancelled: nothing written</source>
+        <translation>Exporten avbröts: inget skrevs</translation>
     </message>
 </context>
 <context>
@@ -321,6 +459,85 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     </message>
 </context>
 <context>
+    <name>ab::ui::PresetActions</name>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Hastighet</translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation>Energi</translation>
+    </message>
+    <message>
+        <source>Stage %1 (%2), %3 model</source>
+        <translation>Etapp %1 (%2), modellen %3</translation>
+    </message>
+    <message>
+        <source>, %1 integrator, impacts %2</source>
+        <translation>, integratorn %1, stötar %2</translation>
+    </message>
+    <message>
+        <source>, step %1 %2</source>
+        <translation>, tidssteg %1 %2</translation>
+    </message>
+    <message>
+        <source>, %1 steps.</source>
+        <translation>, %1 steg.</translation>
+    </message>
+    <message>
+        <source>Open preset...</source>
+        <translation>Öppna förinställning...</translation>
+    </message>
+    <message>
+        <source>Save preset...</source>
+        <translation>Spara förinställning...</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Förinställningar</translation>
+    </message>
+    <message>
+        <source>Stage %1: %2</source>
+        <translation>Etapp %1: %2</translation>
+    </message>
+    <message>
+        <source>Charts shown</source>
+        <translation>Visade diagram</translation>
+    </message>
+    <message>
+        <source>Opened preset: %1</source>
+        <translation>Öppnade förinställningen: %1</translation>
+    </message>
+    <message>
+        <source>Preset not opened</source>
+        <translation>Förinställningen öppnades inte</translation>
+    </message>
+    <message>
+        <source>Open preset</source>
+        <translation>Öppna förinställning</translation>
+    </message>
+    <message>
+        <source>Amazeballs preset (*.json)</source>
+        <translation>Amazeballs-förinställning (*.json)</translation>
+    </message>
+    <message>
+        <source>Save preset</source>
+        <translation>Spara förinställning</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+    <message>
+        <source>Preset not saved</source>
+        <translation>Förinställningen sparades inte</translation>
+    </message>
+</context>
+<context>
     <name>ab::ui::RunOptionsPanel</name>
     <message>
         <source>report: the report&apos;s own rules</source>
@@ -381,6 +598,216 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Not applied: %1</source>
         <translation>Inte tillämpat: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StabilityDialog</name>
+    <message>
+        <source>Stability suite</source>
+        <translation>Stabilitetstester</translation>
+    </message>
+    <message>
+        <source>Stiff and extreme runs of both models, each checked every step for energy gained, penetration, escaped balls and non-finite values. Hover a row for its note.</source>
+        <translation>Styva och extrema körningar av båda modellerna, där varje körning kontrolleras i varje steg för energiökning, inträngning, bollar som rymt och icke-ändliga värden. Håll muspekaren över en rad för dess anmärkning.</translation>
+    </message>
+    <message>
+        <source>%v of %m rows</source>
+        <translation>%v av %m rader</translation>
+    </message>
+    <message>
+        <source>Choose what to run and press Run.</source>
+        <translation>Välj vad som ska köras och tryck på Kör.</translation>
+    </message>
+    <message>
+        <source>Export CSV...</source>
+        <translation>Exportera CSV...</translation>
+    </message>
+    <message>
+        <source>Export Markdown...</source>
+        <translation>Exportera Markdown...</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Stäng</translation>
+    </message>
+    <message>
+        <source>Every case</source>
+        <translation>Alla fall</translation>
+    </message>
+    <message>
+        <source>The rows of %1</source>
+        <translation>Raderna för %1</translation>
+    </message>
+    <message>
+        <source>Case %1</source>
+        <translation>Fall %1</translation>
+    </message>
+    <message>
+        <source>R&amp;un:</source>
+        <translation>&amp;Kör:</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Kör</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Filter by case, model, integrator, setting</source>
+        <translation>Filtrera på fall, modell, integrator, inställning</translation>
+    </message>
+    <message>
+        <source>All verdicts</source>
+        <translation>Alla bedömningar</translation>
+    </message>
+    <message>
+        <source>Legend:</source>
+        <translation>Teckenförklaring:</translation>
+    </message>
+    <message>
+        <source>energy grew past the limit, a ball escaped, or a value became non-finite</source>
+        <translation>energin växte över gränsen, en boll rymde eller ett värde blev icke-ändligt</translation>
+    </message>
+    <message>
+        <source>within bounds but off: energy gained or penetration beyond tolerance</source>
+        <translation>inom gränserna men avvikande: energiökning eller inträngning utöver toleransen</translation>
+    </message>
+    <message>
+        <source>held</source>
+        <translation>höll</translation>
+    </message>
+    <message>
+        <source>not in this build or not run</source>
+        <translation>finns inte i denna version eller kördes inte</translation>
+    </message>
+    <message>
+        <source>Running...</source>
+        <translation>Kör...</translation>
+    </message>
+    <message>
+        <source>Cancelling...</source>
+        <translation>Avbryter...</translation>
+    </message>
+    <message>
+        <source>The suite stopped: %1</source>
+        <translation>Testerna stoppades: %1</translation>
+    </message>
+    <message>
+        <source>Done: %1</source>
+        <translation>Klart: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1. Nothing to export from a partial run.</source>
+        <translation>Avbrutet: %1. Inget att exportera från en ofullständig körning.</translation>
+    </message>
+    <message>
+        <source>%1 rows, %2 ok, %3 degraded, %4 failed, %5 not run</source>
+        <translation>%1 rader, %2 ok, %3 försämrade, %4 underkända, %5 ej körda</translation>
+    </message>
+    <message>
+        <source>Export Markdown</source>
+        <translation>Exportera Markdown</translation>
+    </message>
+    <message>
+        <source>Markdown (*.md)</source>
+        <translation>Markdown-fil (*.md)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportera CSV</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV-tabell (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Sparade %1</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Exporten misslyckades</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StabilityTableModel</name>
+    <message>
+        <source>✖ failed</source>
+        <translation>✖ underkänd</translation>
+    </message>
+    <message>
+        <source>▲ degraded</source>
+        <translation>▲ försämrad</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>– not run</source>
+        <translation>– ej körd</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nej</translation>
+    </message>
+    <message>
+        <source>case</source>
+        <translation>fall</translation>
+    </message>
+    <message>
+        <source>model</source>
+        <translation>modell</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>integrator</translation>
+    </message>
+    <message>
+        <source>setting</source>
+        <translation>inställning</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>bedömning</translation>
+    </message>
+    <message>
+        <source>max energy gain</source>
+        <translation>max energiökning</translation>
+    </message>
+    <message>
+        <source>max penetration</source>
+        <translation>max inträngning</translation>
+    </message>
+    <message>
+        <source>escaped</source>
+        <translation>rymt</translation>
+    </message>
+    <message>
+        <source>non-finite</source>
+        <translation>icke-ändligt</translation>
+    </message>
+    <message>
+        <source>reference error</source>
+        <translation>referensfel</translation>
+    </message>
+    <message>
+        <source>dt</source>
+        <translation>dt</translation>
+    </message>
+    <message>
+        <source>CPU seconds</source>
+        <translation>CPU-sekunder</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>anmärkning</translation>
     </message>
 </context>
 <context>
@@ -479,6 +906,172 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>%1 fps</source>
         <translation>%1 bilder/s</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StudyDialog</name>
+    <message>
+        <source>Accuracy study: %1</source>
+        <translation>Noggrannhetsstudie: %1</translation>
+    </message>
+    <message>
+        <source>Error against run time of the physical model&apos;s integrators on %1, each run measured against the scene&apos;s exact motion. Lower left is better; a steeper line is a higher order.</source>
+        <translation>Fel mot beräkningstid för den fysikaliska modellens integratorer för %1, där varje körning mäts mot etappens exakta rörelse. Längre ned till vänster är bättre; en brantare linje innebär högre ordning.</translation>
+    </message>
+    <message>
+        <source>%v of %m runs</source>
+        <translation>%v av %m körningar</translation>
+    </message>
+    <message>
+        <source>Press Run to start.</source>
+        <translation>Tryck på Kör för att börja.</translation>
+    </message>
+    <message>
+        <source>Export CSV...</source>
+        <translation>Exportera CSV...</translation>
+    </message>
+    <message>
+        <source>Export chart...</source>
+        <translation>Exportera diagram...</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Stäng</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;No accuracy study for %1 with these constants.&lt;/b&gt;&lt;/p&gt;&lt;p&gt;The study measures each integrator&apos;s error against the scene&apos;s exact motion, and here there is none: %2&lt;/p&gt;&lt;p&gt;It applies to bounce1d (no drag, linear or quadratic drag), box3d without drag or friction, and two-balls in the symmetric head-on meeting. The stability suite (Tools menu) covers every scene.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Ingen noggrannhetsstudie för %1 med dessa konstanter.&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Studien mäter varje integrators fel mot etappens exakta rörelse, och här finns ingen sådan: %2&lt;/p&gt;&lt;p&gt;Den gäller bounce1d (utan luftmotstånd eller med linjärt eller kvadratiskt luftmotstånd), box3d utan luftmotstånd och friktion samt two-balls i det symmetriska mötet rakt framifrån. Stabilitetstesterna (menyn Verktyg) omfattar alla etapper.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;t end (%1)</source>
+        <translation>&amp;sluttid (%1)</translation>
+    </message>
+    <message>
+        <source>Each run goes from t = 0 to this time.</source>
+        <translation>Varje körning går från t = 0 till denna tidpunkt.</translation>
+    </message>
+    <message>
+        <source>dt &amp;from</source>
+        <translation>dt &amp;från</translation>
+    </message>
+    <message>
+        <source>The coarsest step (the sampling interval for event-driven).</source>
+        <translation>Det grövsta tidssteget (samplingsintervallet för den händelsestyrda metoden).</translation>
+    </message>
+    <message>
+        <source>&amp;to</source>
+        <translation>&amp;till</translation>
+    </message>
+    <message>
+        <source>The finest step; steps between are spaced evenly on a log scale.</source>
+        <translation>Det finaste tidssteget; stegen däremellan fördelas jämnt på en logaritmisk skala.</translation>
+    </message>
+    <message>
+        <source>&amp;per decade</source>
+        <translation>&amp;per dekad</translation>
+    </message>
+    <message>
+        <source>Steps tried per factor of ten.</source>
+        <translation>Antal tidssteg som prövas per tiopotens.</translation>
+    </message>
+    <message>
+        <source>&amp;repeats</source>
+        <translation>&amp;upprepningar</translation>
+    </message>
+    <message>
+        <source>Timed repeats of each run; the median CPU time is shown.</source>
+        <translation>Tidtagna upprepningar av varje körning; medianen av CPU-tiden visas.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Kör</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Running...</source>
+        <translation>Kör...</translation>
+    </message>
+    <message>
+        <source>Cancelling...</source>
+        <translation>Avbryter...</translation>
+    </message>
+    <message>
+        <source>%1 of %2: %3 at dt %4</source>
+        <translation>%1 av %2: %3 med dt %4</translation>
+    </message>
+    <message>
+        <source>The study stopped: %1</source>
+        <translation>Studien stoppades: %1</translation>
+    </message>
+    <message>
+        <source>Done: %1 runs against %2.</source>
+        <translation>Klart: %1 körningar mot %2.</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 runs; nothing to export from a partial study.</source>
+        <translation>Avbrutet efter %1 körningar; inget att exportera från en ofullständig studie.</translation>
+    </message>
+    <message>
+        <source>The chart appears when the study is done.</source>
+        <translation>Diagrammet visas när studien är klar.</translation>
+    </message>
+    <message>
+        <source>Export chart</source>
+        <translation>Exportera diagram</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG image (*.svg)</source>
+        <translation>PNG-bild (*.png);;SVG-bild (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportera CSV</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV-tabell (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Sparade %1</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Exporten misslyckades</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StudyTableModel</name>
+    <message>
+        <source>integrator</source>
+        <translation>integrator</translation>
+    </message>
+    <message>
+        <source>impacts</source>
+        <translation>stötar</translation>
+    </message>
+    <message>
+        <source>dt (%1)</source>
+        <translation>dt (%1)</translation>
+    </message>
+    <message>
+        <source>max error (%1)</source>
+        <translation>max fel (%1)</translation>
+    </message>
+    <message>
+        <source>relative error</source>
+        <translation>relativt fel</translation>
+    </message>
+    <message>
+        <source>CPU seconds</source>
+        <translation>CPU-sekunder</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>steg</translation>
     </message>
 </context>
 <context>
@@ -1149,6 +1742,78 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>z of a fixed tangent with x = y = 0.3</source>
         <translation>z för en fast tangent med x = y = 0.3</translation>
     </message>
+    <message>
+        <source>Stage 1 as in the report: a ball bouncing on a floor</source>
+        <translation>Etapp 1 som i rapporten: en boll som studsar mot ett golv</translation>
+    </message>
+    <message>
+        <source>The report&apos;s stage 1 (section 2.2.1, Appendix A, Figure 2.5): a ball dropped from height 2000 with gravity 0.0982 per step^2, 2000 steps of dt = 1. Each bounce reverses the velocity and keeps k = 0.6 of it (eq 2.3); once more than 10 bounces have happened, the report&apos;s counter stops the ball.</source>
+        <translation>Rapportens etapp 1 (avsnitt 2.2.1, bilaga A, figur 2.5): en boll som släpps från höjden 2000 med tyngdaccelerationen 0.0982 per steg^2, 2000 steg med dt = 1. Varje studs vänder hastigheten och behåller andelen k = 0.6 av den (ekv. 2.3); när fler än 10 studsar har skett stoppar rapportens räknare bollen.</translation>
+    </message>
+    <message>
+        <source>Zeno: infinitely many bounces in a finite time (k = 0.9)</source>
+        <translation>Zeno: oändligt många studsar på ändlig tid (k = 0.9)</translation>
+    </message>
+    <message>
+        <source>Textbook physics with k = 0.9: every bounce keeps 90 % of the speed, so every flight lasts 0.9 of the one before. The flight times form a geometric series, and infinitely many bounces fit into t = t0 (1 + k) / (1 - k) = 19 t0, about 3835 steps, where t0 = 201.8 steps is the first fall from height 2000. The event-driven integrator solves every impact time exactly; the report instead stops the ball after 10 bounces.</source>
+        <translation>Läroboksfysik med k = 0.9: varje studs behåller 90 % av farten, så varje flykt varar 0.9 av den föregående. Flygtiderna bildar en geometrisk serie, och oändligt många studsar ryms inom t = t0 (1 + k) / (1 - k) = 19 t0, ungefär 3835 steg, där t0 = 201.8 steg är det första fallet från höjden 2000. Den händelsestyrda integratorn löser varje stöttidpunkt exakt; rapporten stoppar i stället bollen efter 10 studsar.</translation>
+    </message>
+    <message>
+        <source>Stage 2 as in the report: one ball in a box</source>
+        <translation>Etapp 2 som i rapporten: en boll i en kub</translation>
+    </message>
+    <message>
+        <source>The report&apos;s stage 2 (section 2.2.2, Figures 2.6 and 2.7): a ball thrown from (2, 20, 2) m at (10, 0, 15) m/s inside an open-top box of side 300 m, g = 9.82 m/s^2, 6000 steps of 0.01 s. Floor and walls reverse the velocity along their axis and keep k = 0.9 of it (eq 2.17); after more than 50 contacts the report&apos;s counter stops the ball.</source>
+        <translation>Rapportens etapp 2 (avsnitt 2.2.2, figur 2.6 och 2.7): en boll som kastas från (2, 20, 2) m med (10, 0, 15) m/s i en kub utan tak med sidan 300 m, g = 9.82 m/s^2, 6000 steg om 0.01 s. Golv och väggar vänder hastigheten längs sin axel och behåller andelen k = 0.9 av den (ekv. 2.17); efter fler än 50 kontakter stoppar rapportens räknare bollen.</translation>
+    </message>
+    <message>
+        <source>Tunnelling: a coarse step jumps past the wall</source>
+        <translation>Tunnling: ett grovt steg hoppar förbi väggen</translation>
+    </message>
+    <message>
+        <source>A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the box. Impacts are looked for only at the end of each step, as the report does, so the step from x = 270 m lands at x = 330 m, 30 m beyond the wall at x = 300 m, before the impact is noticed: the step jumped past the wall. Set impacts to located, or the integrator to event, and the impact time is solved inside the step, so the ball turns exactly at the wall.</source>
+        <translation>En snabb boll (240 m/s längs x) och ett grovt steg på 0.25 s: ett steg täcker 60 m, en femtedel av kuben. Stötar söks bara i slutet av varje steg, som rapporten gör, så steget från x = 270 m landar i x = 330 m, 30 m bortom väggen vid x = 300 m, innan stöten märks: steget hoppade förbi väggen. Välj stötar lokaliserade (located) eller integratorn event, så löses stöttidpunkten inne i steget och bollen vänder exakt vid väggen.</translation>
+    </message>
+    <message>
+        <source>Stage 4 with the 200 balls of Figure 3.1</source>
+        <translation>Etapp 4 med de 200 bollarna i figur 3.1</translation>
+    </message>
+    <message>
+        <source>The report&apos;s WebGL model with the 200 balls its Figure 3.1 shows (its code starts 150). Everything else is as in the report: radius 1, a box 100 wide, one update per frame.</source>
+        <translation>Rapportens WebGL-modell med de 200 bollar som dess figur 3.1 visar (dess kod startar 150). Allt annat är som i rapporten: radien 1, en kub med sidan 100, en uppdatering per bildruta.</translation>
+    </message>
+    <message>
+        <source>Stage 4 as in the report: 150 balls in a box</source>
+        <translation>Etapp 4 som i rapporten: 150 bollar i en kub</translation>
+    </message>
+    <message>
+        <source>The report&apos;s WebGL model (section 2.3, Appendix D): 150 balls of radius 1 start in a small cube at the centre of a box 100 wide, with random velocities, and move one update per frame for 1000 frames. Walls keep 0.9 of the normal velocity; two balls closer than 2.2 r collide by eqs 2.23-2.31.</source>
+        <translation>Rapportens WebGL-modell (avsnitt 2.3, bilaga D): 150 bollar med radien 1 startar i en liten kub i mitten av en kub med sidan 100, med slumpade hastigheter, och flyttas en uppdatering per bildruta i 1000 bildrutor. Väggarna behåller 0.9 av normalhastigheten; två bollar närmare än 2.2 r kolliderar enligt ekv. 2.23-2.31.</translation>
+    </message>
+    <message>
+        <source>Head-on collision: the moving ball stops</source>
+        <translation>Kollision rakt framifrån: den rörliga bollen stannar</translation>
+    </message>
+    <message>
+        <source>Textbook physics with gravity switched off, so only the collision changes the motion. Ball 1 moves at 10 m/s along z towards ball 2, which is at rest, centre on centre; they touch at t = 9 s. The whole velocity lies along the line of centres, so with equal masses and e = 1 (eqs 2.6-2.7) ball 1 stops dead and ball 2 leaves at 10 m/s, as in Newton&apos;s cradle. Lower e and ball 1 follows at (1 - e) 5 m/s.</source>
+        <translation>Läroboksfysik utan tyngdkraft, så att bara kollisionen ändrar rörelsen. Boll 1 rör sig med 10 m/s längs z mot boll 2, som ligger stilla, centrum mot centrum; de möts vid t = 9 s. Hela hastigheten ligger längs centrumlinjen, så med lika massor och e = 1 (ekv. 2.6-2.7) stannar boll 1 tvärt och boll 2 far iväg med 10 m/s, som i Newtons vagga. Sänk e så följer boll 1 efter med (1 - e) 5 m/s.</translation>
+    </message>
+    <message>
+        <source>Oblique collision: the balls leave at right angles</source>
+        <translation>Sned kollision: bollarna skiljs åt i rät vinkel</translation>
+    </message>
+    <message>
+        <source>As the head-on collision, but ball 2 sits 5 m (one radius) to the side, so at contact the line of centres is 30 degrees off ball 1&apos;s path. Only the normal part of ball 1&apos;s velocity, 10 cos 30 = 8.66 m/s, passes to ball 2; the tangential part, 10 sin 30 = 5 m/s, stays with ball 1 (eqs 2.8-2.9). With equal masses and e = 1 the two leave at right angles, as on a billiard table.</source>
+        <translation>Som kollisionen rakt framifrån, men boll 2 ligger 5 m (en radie) åt sidan, så vid kontakten pekar centrumlinjen 30 grader från boll 1:s bana. Bara normaldelen av boll 1:s hastighet, 10 cos 30 = 8.66 m/s, går över till boll 2; den tangentiella delen, 10 sin 30 = 5 m/s, stannar hos boll 1 (ekv. 2.8-2.9). Med lika massor och e = 1 skiljs de åt i rät vinkel, som på ett biljardbord.</translation>
+    </message>
+    <message>
+        <source>Stage 3 as in the report: two balls meet head-on</source>
+        <translation>Etapp 3 som i rapporten: två bollar möts rakt framifrån</translation>
+    </message>
+    <message>
+        <source>The report&apos;s stage 3 (Appendix C): two balls of radius 1 m start at opposite walls, at (2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and meet along z. Instead of eqs 2.4-2.11 the report&apos;s code swaps the two velocities and scales them by 0.95; run the physical model beside it to see the difference.</source>
+        <translation>Rapportens etapp 3 (bilaga C): två bollar med radien 1 m startar vid motsatta väggar, i (2, 20, 2) m och (2, 20, 298) m, med hastigheterna (10, 0, 15) och (10, 0, -15) m/s, och möts längs z. I stället för ekv. 2.4-2.11 byter rapportens kod plats på de två hastigheterna och skalar dem med 0.95; kör den fysikaliska modellen bredvid för att se skillnaden.</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1203,6 +1868,30 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>--theme: unknown theme &apos;%1&apos;</source>
         <translation>--theme: okänt tema &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Open a built-in preset by NAME, or a preset FILE.</source>
+        <translation>Öppna en inbyggd förinställning med namnet NAME eller en förinställningsfil FILE.</translation>
+    </message>
+    <message>
+        <source>Start as on a first start: neither read nor write the remembered window, stage and settings.</source>
+        <translation>Starta som första gången: läs eller skriv varken det sparade fönstret, etappen eller inställningarna.</translation>
+    </message>
+    <message>
+        <source>A preset file to open.</source>
+        <translation>En förinställningsfil att öppna.</translation>
+    </message>
+    <message>
+        <source>a remembered setup was skipped:</source>
+        <translation>en sparad uppsättning hoppades över:</translation>
+    </message>
+    <message>
+        <source>give one preset: a FILE.json or --preset NAME|FILE</source>
+        <translation>ange en förinställning: en FILE.json eller --preset NAME|FILE</translation>
+    </message>
+    <message>
+        <source>--scene: a preset names its own stage; give one or the other</source>
+        <translation>--scene: en förinställning anger sin egen etapp; ange det ena eller det andra</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core_text.h"
 
+#include "core/io/preset.h"
 #include "core/scene.h"
 
 #include <QCoreApplication>
@@ -42,6 +43,10 @@ std::vector<std::string> coreDisplayedStrings()
     }
     for (Integrator i : allIntegrators())
         add(integratorTitle(i));
+    for (const BuiltinPreset& b : builtinPresets()) {
+        add(b.preset.name);
+        add(b.preset.description);
+    }
     return {out.begin(), out.end()};
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "preset_actions.h"
 
+#include "ui/i18n/core_text.h"
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
 #include "ui/view/ball_view.h"
@@ -88,12 +89,12 @@ QString describe(const RunSpec& spec, long long steps)
     const SceneInfo& info = sceneInfo(spec.scene);
     QString text = PresetActions::tr("Stage %1 (%2), %3 model")
                        .arg(info.stage)
-                       .arg(qs(info.title), qs(std::string(modelKey(spec.model))));
+                       .arg(coreText(info.title), qs(std::string(modelKey(spec.model))));
     if (spec.model == ModelKind::Physical)
         text += PresetActions::tr(", %1 integrator, impacts %2")
                     .arg(qs(std::string(integratorKey(spec.integrator))), qs(std::string(impactModeKey(spec.impacts))));
     if (spec.dt)
-        text += PresetActions::tr(", step %1 %2").arg(*spec.dt).arg(qs(info.timeUnit));
+        text += PresetActions::tr(", step %1 %2").arg(*spec.dt).arg(coreText(info.timeUnit));
     return text + PresetActions::tr(", %1 steps.").arg(steps);
 }
 
@@ -167,12 +168,12 @@ void PresetActions::addPresetsMenu(QMenuBar* bar)
     for (const BuiltinPreset& b : builtinPresets()) {
         const SceneInfo& info = sceneInfo(b.preset.scene);
         if (section != &info) {
-            menu->addSection(tr("Stage %1: %2").arg(info.stage).arg(qs(info.title)));
+            menu->addSection(tr("Stage %1: %2").arg(info.stage).arg(coreText(info.title)));
             section = &info;
         }
         const QString key = qs(b.key);
-        QAction* action = menu->addAction(qs(b.preset.name), this, [this, key] { open(key); });
-        action->setToolTip(qs(b.preset.description));
+        QAction* action = menu->addAction(coreText(b.preset.name), this, [this, key] { open(key); });
+        action->setToolTip(coreText(b.preset.description));
         action->setData(key);
     }
 }
@@ -206,8 +207,8 @@ std::optional<QString> PresetActions::open(const QString& nameOrPath)
         const Preset preset = loadPreset(nameOrPath.toStdString());
         applyPresetToWindow(*window_, preset);
         syncChartToggles();
-        window_->statusBar()->showMessage(tr("Opened preset: %1").arg(qs(preset.name)), 8000);
-        emit presetOpened(qs(preset.name));
+        window_->statusBar()->showMessage(tr("Opened preset: %1").arg(coreText(preset.name)), 8000);
+        emit presetOpened(coreText(preset.name));
         return std::nullopt;
     } catch (const InputError& e) {
         const QString message = QString::fromUtf8(e.what());
