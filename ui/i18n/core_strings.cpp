@@ -213,23 +213,55 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "z of a fixed tangent with x = y = 0.3"),
     // The built-in presets' names and descriptions (resources/presets/*.json).
     QT_TRANSLATE_NOOP("core", "Stage 1 as in the report: a ball bouncing on a floor"),
-    QT_TRANSLATE_NOOP("core", "The report's stage 1 (section 2.2.1, Appendix A, Figure 2.5): a ball dropped from height 2000 with gravity 0.0982 per step^2, 2000 steps of dt = 1. Each bounce reverses the velocity and keeps k = 0.6 of it (eq 2.3); once more than 10 bounces have happened, the report's counter stops the ball."),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's stage 1 (section 2.2.1, Appendix A, Figure 2.5): a ball dropped from height 2000 with "
+                "gravity 0.0982 per step^2, 2000 steps of dt = 1. Each bounce reverses the velocity and keeps k = 0.6 "
+                "of it (eq 2.3); once more than 10 bounces have happened, the report's counter stops the ball."),
     QT_TRANSLATE_NOOP("core", "Zeno: infinitely many bounces in a finite time (k = 0.9)"),
-    QT_TRANSLATE_NOOP("core", "Textbook physics with k = 0.9: every bounce keeps 90 % of the speed, so every flight lasts 0.9 of the one before. The flight times form a geometric series, and infinitely many bounces fit into t = t0 (1 + k) / (1 - k) = 19 t0, about 3835 steps, where t0 = 201.8 steps is the first fall from height 2000. The event-driven integrator solves every impact time exactly; the report instead stops the ball after 10 bounces."),
+    QT_TRANSLATE_NOOP(
+        "core",
+        "Textbook physics with k = 0.9: every bounce keeps 90 % of the speed, so every flight lasts 0.9 of the one "
+        "before. The flight times form a geometric series, and infinitely many bounces fit into t = t0 (1 + k) / (1 - "
+        "k) = 19 t0, about 3835 steps, where t0 = 201.8 steps is the first fall from height 2000. The event-driven "
+        "integrator solves every impact time exactly; the report instead stops the ball after 10 bounces."),
     QT_TRANSLATE_NOOP("core", "Stage 2 as in the report: one ball in a box"),
-    QT_TRANSLATE_NOOP("core", "The report's stage 2 (section 2.2.2, Figures 2.6 and 2.7): a ball thrown from (2, 20, 2) m at (10, 0, 15) m/s inside an open-top box of side 300 m, g = 9.82 m/s^2, 6000 steps of 0.01 s. Floor and walls reverse the velocity along their axis and keep k = 0.9 of it (eq 2.17); after more than 50 contacts the report's counter stops the ball."),
+    QT_TRANSLATE_NOOP("core", "The report's stage 2 (section 2.2.2, Figures 2.6 and 2.7): a ball thrown from (2, 20, "
+                              "2) m at (10, 0, 15) m/s inside an open-top box of side 300 m, g = 9.82 m/s^2, 6000 "
+                              "steps of 0.01 s. Floor and walls reverse the velocity along their axis and keep k = 0.9 "
+                              "of it (eq 2.17); after more than 50 contacts the report's counter stops the ball."),
     QT_TRANSLATE_NOOP("core", "Tunnelling: a coarse step jumps past the wall"),
-    QT_TRANSLATE_NOOP("core", "A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the box. Impacts are looked for only at the end of each step, as the report does, so the step from x = 270 m lands at x = 330 m, 30 m beyond the wall at x = 300 m, before the impact is noticed: the step jumped past the wall. Set impacts to located, or the integrator to event, and the impact time is solved inside the step, so the ball turns exactly at the wall."),
+    QT_TRANSLATE_NOOP("core",
+                      "A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the "
+                      "box. Impacts are looked for only at the end of each step, as the report does, so the step from "
+                      "x = 270 m lands at x = 330 m, 30 m beyond the wall at x = 300 m, before the impact is noticed: "
+                      "the step jumped past the wall. Set impacts to located, or the integrator to event, and the "
+                      "impact time is solved inside the step, so the ball turns exactly at the wall."),
     QT_TRANSLATE_NOOP("core", "Stage 4 with the 200 balls of Figure 3.1"),
-    QT_TRANSLATE_NOOP("core", "The report's WebGL model with the 200 balls its Figure 3.1 shows (its code starts 150). Everything else is as in the report: radius 1, a box 100 wide, one update per frame."),
+    QT_TRANSLATE_NOOP("core", "The report's WebGL model with the 200 balls its Figure 3.1 shows (its code starts 150). "
+                              "Everything else is as in the report: radius 1, a box 100 wide, one update per frame."),
     QT_TRANSLATE_NOOP("core", "Stage 4 as in the report: 150 balls in a box"),
-    QT_TRANSLATE_NOOP("core", "The report's WebGL model (section 2.3, Appendix D): 150 balls of radius 1 start in a small cube at the centre of a box 100 wide, with random velocities, and move one update per frame for 1000 frames. Walls keep 0.9 of the normal velocity; two balls closer than 2.2 r collide by eqs 2.23-2.31."),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's WebGL model (section 2.3, Appendix D): 150 balls of radius 1 start in a small cube at "
+                "the centre of a box 100 wide, with random velocities, and move one update per frame for 1000 frames. "
+                "Walls keep 0.9 of the normal velocity; two balls closer than 2.2 r collide by eqs 2.23-2.31."),
     QT_TRANSLATE_NOOP("core", "Head-on collision: the moving ball stops"),
-    QT_TRANSLATE_NOOP("core", "Textbook physics with gravity switched off, so only the collision changes the motion. Ball 1 moves at 10 m/s along z towards ball 2, which is at rest, centre on centre; they touch at t = 9 s. The whole velocity lies along the line of centres, so with equal masses and e = 1 (eqs 2.6-2.7) ball 1 stops dead and ball 2 leaves at 10 m/s, as in Newton's cradle. Lower e and ball 1 follows at (1 - e) 5 m/s."),
+    QT_TRANSLATE_NOOP(
+        "core",
+        "Textbook physics with gravity switched off, so only the collision changes the motion. Ball 1 moves at 10 m/s "
+        "along z towards ball 2, which is at rest, centre on centre; they touch at t = 9 s. The whole velocity lies "
+        "along the line of centres, so with equal masses and e = 1 (eqs 2.6-2.7) ball 1 stops dead and ball 2 leaves "
+        "at 10 m/s, as in Newton's cradle. Lower e and ball 1 follows at (1 - e) 5 m/s."),
     QT_TRANSLATE_NOOP("core", "Oblique collision: the balls leave at right angles"),
-    QT_TRANSLATE_NOOP("core", "As the head-on collision, but ball 2 sits 5 m (one radius) to the side, so at contact the line of centres is 30 degrees off ball 1's path. Only the normal part of ball 1's velocity, 10 cos 30 = 8.66 m/s, passes to ball 2; the tangential part, 10 sin 30 = 5 m/s, stays with ball 1 (eqs 2.8-2.9). With equal masses and e = 1 the two leave at right angles, as on a billiard table."),
+    QT_TRANSLATE_NOOP("core",
+                      "As the head-on collision, but ball 2 sits 5 m (one radius) to the side, so at contact the line "
+                      "of centres is 30 degrees off ball 1's path. Only the normal part of ball 1's velocity, 10 cos "
+                      "30 = 8.66 m/s, passes to ball 2; the tangential part, 10 sin 30 = 5 m/s, stays with ball 1 (eqs "
+                      "2.8-2.9). With equal masses and e = 1 the two leave at right angles, as on a billiard table."),
     QT_TRANSLATE_NOOP("core", "Stage 3 as in the report: two balls meet head-on"),
-    QT_TRANSLATE_NOOP("core", "The report's stage 3 (Appendix C): two balls of radius 1 m start at opposite walls, at (2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and meet along z. Instead of eqs 2.4-2.11 the report's code swaps the two velocities and scales them by 0.95; run the physical model beside it to see the difference."),
+    QT_TRANSLATE_NOOP("core", "The report's stage 3 (Appendix C): two balls of radius 1 m start at opposite walls, at "
+                              "(2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and "
+                              "meet along z. Instead of eqs 2.4-2.11 the report's code swaps the two velocities and "
+                              "scales them by 0.95; run the physical model beside it to see the difference."),
 };
 
 } // namespace
