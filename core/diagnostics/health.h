@@ -13,8 +13,9 @@
 //     start: k and e are at most 1, so any gain is the method's (warning above 1e-6 of the
 //     start, failed above 10%; a start with less energy than a ball raised by the scene's
 //     size is measured against that instead);
-//  4. ball overlap, balls passing through each other within a step (two-balls and small
-//     many-balls runs all pairs; larger runs look for overlaps on a grid), and the
+//  4. ball overlap, balls passing through each other within a step (failed; a path that
+//     only grazes the contact distance, by under a tenth of a radius, is a warning; two-balls
+//     and small many-balls runs all pairs; larger runs look for overlaps on a grid), and the
 //     momentum change of a pair contact away from the walls (two-balls);
 //  5. the report model's own known failures, named as such: its stage-1 Euler energy
 //     gain, the stage-3 swap repeating while the balls overlap, stage-4 balls stuck on the

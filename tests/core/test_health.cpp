@@ -153,6 +153,20 @@ private slots:
         QVERIFY(mentions(*c.health, "passed through each other"));
     }
 
+    void ballsGrazingWithinAStepWarnWithoutFailing()
+    {
+        // As above, but 1.99 apart sideways (along y, so that the report's distance, which
+        // counts dy twice, also stays above 2 r at both step ends): the straight path
+        // comes within 1.99 of contact at 2, 0.01 r inside it, less than the tenth of a
+        // radius that counts as passing through.
+        const Checked c = runChecked(testing::spec(SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,21.99,200",
+                                                                       "v1=0,0,10000", "v2=0,0,-10000"}),
+                                     1);
+        QCOMPARE(c.health->worst().level, Health::Warning);
+        QVERIFY(mentions(*c.health, "grazed within one step"));
+        QVERIFY(!mentions(*c.health, "passed through each other"));
+    }
+
     void springCompressionIsTheClosedForm()
     {
         // Undamped (k = 1), no gravity, entering at speed 1: deepest point u / omega0 = 0.1

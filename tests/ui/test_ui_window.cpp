@@ -11,6 +11,8 @@
 #include "ui/panels/status_readout.h"
 #include "ui/panels/transport_bar.h"
 
+#include "tests/support/sim_helpers.h"
+
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -335,6 +337,51 @@ private slots:
         // E/m at rest at h0 = 2000 under g = 0.0982: 196.4; after one step of eq 2.15-2.16
         // the ball still stands at 2000 with v = -0.0982: 196.4 + 0.0982^2 / 2.
         QVERIFY(std::abs(w.controller().status().energy - (196.4 + 0.0982 * 0.0982 / 2)) < 1e-9);
+    }
+
+    void aFailedHealthCheckPausesTheRunAtTheFailureAndNamesIt()
+    {
+        // The report's two balls at 100 m a step each way swap sides without ever being
+        // closer than 2 r at a step's end: the health check finds them passed through each
+        // other in the step from the start, and the run pauses there, once.
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::TwoBalls);
+        const ab::RunSpec failing = testing::spec(
+            SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,200", "v1=0,0,10000", "v2=0,0,-10000"});
+        QVERIFY(w.applyValues(failing.params));
+        w.controller().play();
+        QTRY_VERIFY(w.controller().status().pausedOnHealth);
+        const ab::ui::EngineStatus s = w.controller().status();
+        QVERIFY(!s.playing);
+        QVERIFY(!s.finished);
+        QCOMPARE(s.health, ab::diagnostics::Health::Failed);
+        QCOMPARE(s.steps, 2LL); // the step from the start is final once the next is taken
+        QVERIFY(s.healthLine.find("passed through each other") != std::string::npos);
+        QTRY_VERIFY(w.readout()->warningText().startsWith("Paused: "));
+        QVERIFY(w.readout()->warningText().contains("passed through each other"));
+
+        // Play goes on from there; the same failure does not stop the run again.
+        w.controller().play();
+        QTRY_VERIFY(w.controller().status().steps > 6);
+        QVERIFY(w.controller().playing());
+        QTRY_VERIFY(!w.readout()->warningText().startsWith("Paused: "));
+    }
+
+    void aHealthWarningIsShownWithoutPausing()
+    {
+        // The report's stage 1 moves the position with the old velocity (eq 2.16): explicit
+        // Euler gains g^2 dt^2 / 2 per step, which the health check names as the report's
+        // own rule, a warning that does not stop the lesson.
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        w.controller().play();
+        QTRY_VERIFY(w.controller().status().steps > 3);
+        QTRY_COMPARE(w.controller().status().health, ab::diagnostics::Health::Warning);
+        QVERIFY(w.controller().playing());
+        QTRY_VERIFY(w.readout()->warningText().contains("above its start"));
+        QVERIFY(w.readout()->warningText().contains("the report's own rule"));
     }
 };
 

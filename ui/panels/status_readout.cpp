@@ -30,6 +30,10 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     };
     warning_ = new QLabel;
     warning_->setObjectName("statusWarning");
+    // A long finding is cut at the bar's edge (the tooltip holds it whole) rather than
+    // widening the window.
+    warning_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    warning_->setMinimumWidth(120);
     bar->addWidget(warning_, 1);
     time_ = label("statusTime", 130);
     step_ = label("statusStep", 120);
@@ -55,16 +59,33 @@ void StatusReadout::show(const EngineStatus& s)
     energy_->setText(std::isfinite(s.energy)
                          ? tr("E/m = %1 %2%3/%4%3").arg(QString::number(s.energy, 'g', 5), lengthUnit_, sq, timeUnit_)
                          : tr("E/m = -"));
+    // The most serious first: a run that stopped, a failure the health check found (the
+    // run paused on it), the model's own notice, then a warning of the health check.
+    const QString health = QString::fromStdString(s.healthLine);
+    QString text, style;
     if (!s.warning.empty()) {
-        warning_->setStyleSheet("color: #b03020; font-weight: bold;");
-        warning_->setText(tr("Stopped: %1").arg(QString::fromStdString(s.warning)));
+        text = tr("Stopped: %1").arg(QString::fromStdString(s.warning));
+        style = "color: #b03020; font-weight: bold;";
+    } else if (s.health == diagnostics::Health::Failed) {
+        text = s.pausedOnHealth ? tr("Paused: %1").arg(health) : health;
+        style = "color: #b03020; font-weight: bold;";
     } else if (!s.notice.empty()) {
-        warning_->setStyleSheet("color: #9a6700;");
-        warning_->setText(QString::fromStdString(s.notice));
-    } else {
-        warning_->setText(s.finished ? tr("The run is complete; Play starts it again") : QString());
-        warning_->setStyleSheet(QString());
+        text = QString::fromStdString(s.notice);
+        style = "color: #9a6700;";
+    } else if (s.health == diagnostics::Health::Warning) {
+        text = health;
+        style = "color: #9a6700;";
+    } else if (s.finished) {
+        text = tr("The run is complete; Play starts it again");
     }
+    warning_->setText(text);
+    warning_->setStyleSheet(style);
+    // The line can be longer than the bar: the tooltip holds all of it, and the health
+    // check's finding stays readable there when a notice takes the bar.
+    QString tip = text;
+    if (!health.isEmpty() && !text.contains(health))
+        tip += (tip.isEmpty() ? QString() : QStringLiteral("\n")) + health;
+    warning_->setToolTip(tip);
 }
 
 void StatusReadout::setFrameRate(double fps)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The status bar's readings: simulated time, the cost of one step, frames per second,
-// the energy, and any warning from the run (a failed health check in red, a notice from
-// the model such as the report's bounce limit in amber).
+// the energy, and any warning from the run (a stopped run or a failed health check in
+// red, a notice from the model such as the report's bounce limit or a health warning in
+// amber).
 #pragma once
 
 #include "ui/sim/run_engine.h"
