@@ -84,12 +84,18 @@ void MainWindow::buildLayout()
     readout_ = new StatusReadout(statusBar());
     readout_->setFrameRate(view_ ? 0.0 : -1.0);
 
+    // Play or Step while looking back forks the run at the moment shown (issue: step
+    // back); Pause keeps the moment in view.
     connect(transport_, &TransportBar::playToggled, this, [this] {
-        transport_->goLive();
-        controller_.togglePlay();
+        if (controller_.playing()) {
+            controller_.pause();
+            return;
+        }
+        resumeFromLookedBackMoment();
+        controller_.play();
     });
     connect(transport_, &TransportBar::stepRequested, this, [this] {
-        transport_->goLive();
+        resumeFromLookedBackMoment();
         controller_.stepOnce();
     });
     connect(transport_, &TransportBar::resetRequested, &controller_, &RunController::reset);
@@ -366,6 +372,26 @@ void MainWindow::showReference()
                                      return k;
                                  }};
     charts_->setReference(&motion);
+}
+
+bool MainWindow::resumeFromLookedBackMoment()
+{
+    const std::optional<double> viewT = transport_->viewTime();
+    if (!viewT || !controller_.hasRun())
+        return false;
+    std::optional<Frame> shown;
+    controller_.engine().read([&](const Recording& rec, const Frame&) {
+        if (const Frame* f = rec.frameAt(*viewT))
+            shown = Frame{f->step, f->t, {}, {}, f->energy};
+    });
+    transport_->goLive();
+    if (!shown || shown->step >= controller_.status().steps)
+        return false;
+    controller_.resumeFrom(shown->step);
+    statusBar()->showMessage(tr("Went back to t = %1 %2: the run goes on from there, and what came after is dropped")
+                                 .arg(QString::number(shown->t, 'g', 6), coreText(sceneInfo(scene_).timeUnit)),
+                             8000);
+    return true;
 }
 
 void MainWindow::refresh()

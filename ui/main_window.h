@@ -72,6 +72,9 @@ private:
     };
 
     void buildLayout();
+    // When the time slider looks back, forks the run at the frame shown and goes live
+    // there; false when it shows the live state.
+    bool resumeFromLookedBackMoment();
     void buildMenus();
     QWidget* buildLeftPanel();
     QWidget* buildViewArea();

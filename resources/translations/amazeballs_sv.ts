@@ -387,6 +387,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Export cancelled: nothing written</source>
         <translation>Exporten avbröts: inget skrevs</translation>
     </message>
+    <message>
+        <source>Went back to t = %1 %2: the run goes on from there, and what came after is dropped</source>
+        <translation>Tillbaka till t = %1 %2: körningen fortsätter därifrån, och det som kom efter kastas</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::MotionChart</name>
@@ -907,6 +911,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>%1 fps</source>
         <translation>%1 bilder/s</translation>
     </message>
+    <message>
+        <source>Paused: %1</source>
+        <translation>Pausad: %1</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StudyDialog</name>
@@ -1101,10 +1109,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Simulerad tid per verklig sekund: 0,1x till 10x verklig tid</translation>
     </message>
     <message>
-        <source>Drag to look back through the recorded run; the right end is live</source>
-        <translation>Dra för att se tillbaka i den inspelade körningen; högra änden är direkt</translation>
-    </message>
-    <message>
         <source>Pause</source>
         <translation>Paus</translation>
     </message>
@@ -1117,12 +1121,16 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Spela eller pausa (mellanslag)</translation>
     </message>
     <message>
-        <source>t = %1 of %2 %3 (looking back)</source>
-        <translation>t = %1 av %2 %3 (tillbakablick)</translation>
-    </message>
-    <message>
         <source>t = %1 %2 (live)</source>
         <translation>t = %1 %2 (direkt)</translation>
+    </message>
+    <message>
+        <source>Drag to look back through the recorded run; the right end is live. Play or Step there goes on from the moment shown: the run forks, and what came after is dropped</source>
+        <translation>Dra för att se tillbaka i den inspelade körningen; högra änden är direkt. Spela eller Steg där fortsätter från det visade ögonblicket: körningen förgrenas, och det som kom efter kastas</translation>
+    </message>
+    <message>
+        <source>t = %1 of %2 %3 (looking back: Play goes on from here)</source>
+        <translation>t = %1 av %2 %3 (tillbakablick: Spela fortsätter härifrån)</translation>
     </message>
 </context>
 <context>

@@ -38,6 +38,18 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
         thin();
 }
 
+void MotionTrack::truncateFrom(long long step)
+{
+    const auto kept = static_cast<std::size_t>(std::lower_bound(step_.begin(), step_.end(), step) - step_.begin());
+    step_.resize(kept);
+    t_.resize(kept);
+    for (int a = 0; a < 3; ++a) {
+        p_[a].resize(kept);
+        v_[a].resize(kept);
+    }
+    energy_.resize(kept);
+}
+
 void MotionTrack::thin()
 {
     stride_ *= 2;

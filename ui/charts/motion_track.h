@@ -22,6 +22,9 @@ public:
     // current stride. Steps must come in increasing order.
     void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, double energy);
 
+    // Drops every sample of step `step` and later (a run forked back to that step).
+    void truncateFrom(long long step);
+
     std::size_t size() const { return t_.size(); }
     bool empty() const { return t_.empty(); }
     long long stride() const { return stride_; }

@@ -61,7 +61,8 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     time_->setObjectName("timeSlider");
     time_->setRange(0, timeSteps);
     time_->setFocusPolicy(Qt::NoFocus);
-    time_->setToolTip(tr("Drag to look back through the recorded run; the right end is live"));
+    time_->setToolTip(tr("Drag to look back through the recorded run; the right end is live. Play or Step "
+                         "there goes on from the moment shown: the run forks, and what came after is dropped"));
     row->addWidget(time_, 1);
     timeLabel_ = new QLabel;
     timeLabel_->setObjectName("timeLabel");
@@ -140,7 +141,8 @@ void TransportBar::updateLabel()
 {
     const auto fmt = [](double t) { return QString::number(t, 'f', t < 100 ? 2 : 1); };
     if (viewTime_)
-        timeLabel_->setText(tr("t = %1 of %2 %3 (looking back)").arg(fmt(*viewTime_), fmt(end_), unit_));
+        timeLabel_->setText(
+            tr("t = %1 of %2 %3 (looking back: Play goes on from here)").arg(fmt(*viewTime_), fmt(end_), unit_));
     else
         timeLabel_->setText(tr("t = %1 %2 (live)").arg(fmt(end_), unit_));
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Play/pause, one step, reset, the speed (0.1x to 10x real time, logarithmic) and a
 // time slider over the recorded run: dragging it shows an earlier moment (the 3D view
-// and the charts' cursor follow); at its right end the view is live again.
+// and the charts' cursor follow); at its right end the view is live again. Play or Step
+// while looking back forks the run there (MainWindow::resumeFromLookedBackMoment).
 #pragma once
 
 #include <QWidget>

@@ -44,6 +44,14 @@ void Recording::add(long long step, const State& s)
         thinFrames();
 }
 
+void Recording::truncateFrom(long long step)
+{
+    track_.truncateFrom(step);
+    const auto from =
+        std::lower_bound(frames_.begin(), frames_.end(), step, [](const Frame& f, long long s) { return f.step < s; });
+    frames_.erase(from, frames_.end());
+}
+
 void Recording::thinFrames()
 {
     frameStride_ *= 2;

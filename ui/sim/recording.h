@@ -39,6 +39,10 @@ public:
     // Adds final state `s` of step `step`; steps come in increasing order.
     void add(long long step, const State& s);
 
+    // Forgets every state of step `step` and later: the run forks back to that step and
+    // records its new course from there.
+    void truncateFrom(long long step);
+
     // Follows another ball: its track is rebuilt from the frames (coarser where the
     // frames are), and continues at every step from here on.
     void setTrackedBall(int ball);

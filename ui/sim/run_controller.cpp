@@ -110,6 +110,14 @@ void RunController::stepOnce()
         engine_->stepOnce();
 }
 
+void RunController::resumeFrom(long long step)
+{
+    if (!engine_)
+        return;
+    engine_->resumeFrom(step);
+    poll();
+}
+
 void RunController::reset()
 {
     if (!spec_)

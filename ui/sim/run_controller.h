@@ -50,6 +50,8 @@ public slots:
     void reset();
     void setSpeed(double factor);
     void selectBall(int ball);
+    // Forks the run back to recorded step `step`, paused there (RunEngine::resumeFrom).
+    void resumeFrom(long long step);
     // Polls the worker now (the frame timer does it every 16 ms).
     void poll();
 

@@ -3,6 +3,8 @@
 
 #include "core/params.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 #ifdef __linux__
@@ -33,10 +35,16 @@ void lowerThisThreadsPriority()
 
 } // namespace
 
-RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget)
+RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget,
+                     std::size_t keyframeBudget)
     : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())),
       recording_(layout_, trackedBall, frameBudget), state_(sim_->start())
 {
+    health_.emplace(*sim_, state_);
+    // A keyframe holds two 3-vectors of doubles and a counter per ball.
+    const std::size_t keyframeBytes =
+        (6 * sizeof(double) + sizeof(int)) * static_cast<std::size_t>(std::max(state_.size(), 1));
+    maxKeyframes_ = std::max<std::size_t>(keyframeBudget / keyframeBytes, 2); // the start is always kept
     current_ = makeFrame(0, state_, energyPerMass(state_, layout_));
     status_.t = state_.t;
     status_.energy = current_.energy;
@@ -65,8 +73,10 @@ void RunEngine::play(double rate)
         rate_ = rate;
         anchorTime_ = Clock::now();
         anchorStep_ = status_.steps;
-        if (!status_.finished)
+        if (!status_.finished) {
             status_.playing = true;
+            status_.pausedOnHealth = false;
+        }
         ++status_.version;
     }
     wake_.notify_all();
@@ -86,6 +96,7 @@ void RunEngine::stepOnce()
     {
         std::lock_guard lock(mutex_);
         status_.playing = false;
+        status_.pausedOnHealth = false;
         if (!status_.finished)
             ++pendingSteps_;
         ++status_.version;
@@ -102,6 +113,20 @@ void RunEngine::setTrackedBall(int ball)
     ++status_.version;
 }
 
+void RunEngine::resumeFrom(long long step)
+{
+    {
+        std::lock_guard lock(mutex_);
+        if (step < 0 || step > status_.steps)
+            throw std::logic_error("resumeFrom: no such recorded step");
+        status_.playing = false;
+        pendingSteps_ = 0;
+        forkTo_ = step;
+        ++status_.version;
+    }
+    wake_.notify_all();
+}
+
 EngineStatus RunEngine::status() const
 {
     std::lock_guard lock(mutex_);
@@ -116,7 +141,7 @@ void RunEngine::read(const std::function<void(const Recording&, const Frame&)>& 
 
 bool RunEngine::mayStep() const
 {
-    return !status_.finished && (status_.playing || pendingSteps_ > 0);
+    return forkTo_ || (!status_.finished && (status_.playing || pendingSteps_ > 0));
 }
 
 void RunEngine::loop()
@@ -126,6 +151,10 @@ void RunEngine::loop()
     while (!quit_) {
         if (!mayStep()) {
             wake_.wait(lock);
+            continue;
+        }
+        if (forkTo_) {
+            fork(lock);
             continue;
         }
         if (pendingSteps_ > 0)
@@ -160,6 +189,7 @@ bool RunEngine::waitForDueStep(std::unique_lock<std::mutex>& lock)
 void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
 {
     lock.unlock();
+    keepKeyframe();
     const auto begin = Clock::now();
     std::string failure;
     try {
@@ -171,28 +201,134 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
         failure = "the step from t = " + formatNumber(state_.t) + " failed: " + e.what();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    const bool finalOk = finiteState(state_);
+    const bool newFailure = finalOk && checkHealth();
     lock.lock();
 
-    const bool finalOk = finiteState(state_);
     if (finalOk)
         recording_.add(status_.steps, state_);
+    const diagnostics::HealthStatus worst = health_->worst();
+    status_.health = worst.level;
+    status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
+    if (health_->figures().nonfinite && failure.empty())
+        failure = worst.line(); // an overflowing energy: nothing after it can be drawn
     if (!failure.empty() || !finalOk) {
         finish(failure.empty() ? "the state became non-finite" : failure);
         return;
     }
     if (state_.halted && status_.notice.empty())
         status_.notice = "the report's bounce limit stopped the motion at t = " + formatNumber(state_.t);
+    // Rotate: the final state becomes the previous one, the new state the current one.
+    std::swap(previous_, state_);
     std::swap(state_, next_);
+    havePrevious_ = true;
     ++status_.steps;
     status_.stepSeconds = status_.stepSeconds == 0.0 ? seconds : 0.9 * status_.stepSeconds + 0.1 * seconds;
     current_ = makeFrame(status_.steps, state_, energyPerMass(state_, layout_));
     status_.t = state_.t;
     status_.energy = current_.energy;
+    if (newFailure && status_.playing) {
+        status_.playing = false; // stop where the failure showed: the state just recorded
+        status_.pausedOnHealth = true;
+        pendingSteps_ = 0;
+    }
     ++status_.version;
     if (status_.steps >= maxSteps_) {
         recording_.add(status_.steps, state_); // the last state, as runRecorded records it
         finish({});
     }
+}
+
+bool RunEngine::checkHealth()
+{
+    if (!havePrevious_)
+        return false; // the start: nothing to compare with yet
+    health_->check(previous_, state_);
+    std::size_t failures = 0;
+    for (const diagnostics::HealthStatus& s : health_->issues())
+        failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+    const bool grew = failures > failuresSeen_;
+    failuresSeen_ = failures;
+    return grew;
+}
+
+void RunEngine::keepKeyframe()
+{
+    // status_.steps changes only on this thread, so it is read here without the lock.
+    const long long step = status_.steps;
+    if (step % keyframeStride_ != 0 || (!keyframes_.empty() && keyframes_.back().step >= step))
+        return;
+    keyframes_.push_back({step, state_});
+    if (keyframes_.size() <= maxKeyframes_)
+        return;
+    keyframeStride_ *= 2; // thin to every other one, as the recording thins its frames
+    const auto off = [this](const Keyframe& k) { return k.step % keyframeStride_ != 0; };
+    keyframes_.erase(std::remove_if(keyframes_.begin(), keyframes_.end(), off), keyframes_.end());
+}
+
+void RunEngine::fork(std::unique_lock<std::mutex>& lock)
+{
+    const long long target = *forkTo_;
+    forkTo_.reset();
+    // The last keyframe at or before the target; the start's is always there.
+    auto key = std::upper_bound(keyframes_.begin(), keyframes_.end(), target,
+                                [](long long s, const Keyframe& k) { return s < k.step; });
+    if (key == keyframes_.begin()) {
+        keyframes_.insert(keyframes_.begin(), {0, sim_->start()});
+        key = keyframes_.begin() + 1;
+    }
+    const Keyframe& from = *std::prev(key);
+    lock.unlock();
+
+    // Re-take the steps from the keyframe to the target, health check included: each
+    // state is final once the step from it is taken, as in takeStep.
+    State cur = from.state, nxt, prev;
+    bool havePrev = false;
+    health_.emplace(*sim_, sim_->start());
+    std::string failure;
+    try {
+        for (long long step = from.step; step < target; ++step) {
+            sim_->step(cur, nxt);
+            if (havePrev)
+                health_->check(prev, cur);
+            std::swap(prev, cur);
+            std::swap(cur, nxt);
+            havePrev = true;
+        }
+    } catch (const std::exception& e) { // these steps were taken before: only memory can fail
+        failure = std::string("going back failed: ") + e.what();
+    }
+    std::size_t failures = 0;
+    for (const diagnostics::HealthStatus& s : health_->issues())
+        failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+
+    lock.lock();
+    if (!failure.empty()) {
+        finish(failure);
+        return;
+    }
+    keyframes_.erase(std::upper_bound(keyframes_.begin(), keyframes_.end(), target,
+                                      [](long long s, const Keyframe& k) { return s < k.step; }),
+                     keyframes_.end());
+    state_ = std::move(cur);
+    previous_ = std::move(prev);
+    havePrevious_ = havePrev;
+    failuresSeen_ = failures;
+    recording_.truncateFrom(target);
+    status_.steps = target;
+    status_.finished = target >= maxSteps_;
+    status_.pausedOnHealth = false; // playing stays as resumeFrom and any later play() left it
+    status_.warning.clear();
+    status_.notice.clear();
+    const diagnostics::HealthStatus worst = health_->worst();
+    status_.health = worst.level;
+    status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
+    current_ = makeFrame(target, state_, energyPerMass(state_, layout_));
+    status_.t = state_.t;
+    status_.energy = current_.energy;
+    anchorTime_ = Clock::now();
+    anchorStep_ = target;
+    ++status_.version;
 }
 
 void RunEngine::finish(std::string warning)

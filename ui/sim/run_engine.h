@@ -10,10 +10,21 @@
 //    state about to be stepped is shown live as the "current" frame.
 // 3. A step that leaves a non-finite number, or throws, ends the run with a warning; the
 //    bad state is never recorded or shown.
+// 4. Every step is checked by the core's health check (core/diagnostics/health.h) off the
+//    GUI thread. Its worst finding so far is in the status; a new kind of failure (a ball
+//    through a wall, balls through each other, energy gained by a method) pauses the run
+//    at the state that showed it, so the moment can be looked at; Play goes on from there.
+// 5. A run can fork back to any recorded step (resumeFrom): it drops what was recorded
+//    from that step on and goes on from that step's exact state. The worker keeps whole
+//    states ("keyframes", in double, counters included) before the steps on a stride that
+//    doubles whenever they would pass a byte budget, and rebuilds the state of any step
+//    by re-taking the steps from the keyframe before it: the rules are deterministic, so
+//    the forked run is the one a fresh run would have taken to that step, bit for bit.
 #pragma once
 
 #include "recording.h"
 
+#include "core/diagnostics/health.h"
 #include "core/simulation.h"
 
 #include <chrono>
@@ -21,8 +32,10 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace ab::ui {
 
@@ -30,19 +43,25 @@ struct EngineStatus {
     long long steps = 0; // steps taken
     double t = 0.0;      // time of the current state
     bool playing = false;
-    bool finished = false;          // the planned steps are done, or the run failed
-    double stepSeconds = 0.0;       // wall time of one step, smoothed
-    double energy = 0.0;            // of the current state, per unit mass
-    std::string warning;            // from the run's health check, empty when none
-    std::string notice;             // from the model, e.g. the report's bounce limit reached
+    bool finished = false;                                // the planned steps are done, or the run failed
+    double stepSeconds = 0.0;                             // wall time of one step, smoothed
+    double energy = 0.0;                                  // of the current state, per unit mass
+    std::string warning;                                  // from the run's health check, empty when none
+    std::string notice;                                   // from the model, e.g. the report's bounce limit reached
+    diagnostics::Health health = diagnostics::Health::Ok; // the health check's worst finding so far
+    std::string healthLine;                               // that finding: what happened, what to change
+    bool pausedOnHealth = false;    // the last pause was the health check's (cleared by play or a step)
     unsigned long long version = 0; // changes whenever the snapshot does
 };
 
 class RunEngine {
 public:
     // Takes the simulation; `maxSteps` ends the run. `rate` is simulated time per second.
+    static constexpr std::size_t defaultKeyframeBudget = std::size_t(256) << 20;
+
     RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall,
-              std::size_t frameBudget = Recording::defaultFrameBudget);
+              std::size_t frameBudget = Recording::defaultFrameBudget,
+              std::size_t keyframeBudget = defaultKeyframeBudget);
     ~RunEngine();
     RunEngine(const RunEngine&) = delete;
     RunEngine& operator=(const RunEngine&) = delete;
@@ -51,6 +70,10 @@ public:
     void pause();
     void stepOnce(); // pauses, then takes one step
     void setTrackedBall(int ball);
+    // Forks the run back to recorded step `step` (0 to the current step) and pauses it
+    // there; the worker rebuilds the state, so this returns at once and status().steps
+    // becomes `step` when the fork is done. A later play() or stepOnce() waits for it.
+    void resumeFrom(long long step);
 
     EngineStatus status() const;
     // Calls `f` with the recording and the current frame under the lock; keep it short.
@@ -67,6 +90,13 @@ private:
     // Waits until a paced step is due; false when woken by a command instead.
     bool waitForDueStep(std::unique_lock<std::mutex>& lock);
     void takeStep(std::unique_lock<std::mutex>& lock);
+    // Checks the step that made state_ final (worker only, unlocked); true when it
+    // showed a new kind of failure.
+    bool checkHealth();
+    // Carries out a pending resumeFrom (worker only; unlocks while it re-takes steps).
+    void fork(std::unique_lock<std::mutex>& lock);
+    // Keeps state_ (before its step) as a keyframe when its step falls on the stride.
+    void keepKeyframe();
     void finish(std::string warning);
 
     std::unique_ptr<Simulation> sim_;
@@ -80,12 +110,24 @@ private:
     Frame current_;
     EngineStatus status_;
     int pendingSteps_ = 0;
+    std::optional<long long> forkTo_;
     double rate_ = 1.0;
     Clock::time_point anchorTime_;
     long long anchorStep_ = 0;
     bool quit_ = false;
-    // The worker's own.
-    State state_, next_;
+    // The worker's own. previous_ is the last final state before state_ (for the health
+    // check); the three buffers rotate, so no state is copied.
+    State state_, next_, previous_;
+    bool havePrevious_ = false;
+    std::optional<diagnostics::HealthCheck> health_;
+    std::size_t failuresSeen_ = 0;
+    struct Keyframe {
+        long long step;
+        State state; // before the step from it was taken
+    };
+    std::vector<Keyframe> keyframes_; // in step order; the start is always the first
+    std::size_t maxKeyframes_;
+    long long keyframeStride_ = 1;
     std::thread worker_;
 };
 

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+// The window's run on its worker thread: going back to a recorded step forks the run
+// from that step's exact state (the forked run is, bit for bit, the run a fresh start
+// takes), whether the state is kept or rebuilt from an earlier keyframe; the recording
+// drops what came after and records the new course; and the window forks at the moment
+// the time slider shows when Play or Step is pressed there.
+#include "ui/main_window.h"
+#include "ui/panels/transport_bar.h"
+#include "ui/sim/run_engine.h"
+
+#include "tests/support/sim_helpers.h"
+
+#include <QSlider>
+#include <QStatusBar>
+#include <QtTest>
+
+using ab::SceneId;
+using ab::ui::RunEngine;
+
+namespace {
+
+// Steps `engine` until it has taken `steps` steps (single steps: no pacing).
+void stepTo(RunEngine& engine, long long steps)
+{
+    while (engine.status().steps < steps) {
+        const long long before = engine.status().steps;
+        engine.stepOnce();
+        QTRY_VERIFY(engine.status().steps > before);
+    }
+}
+
+// The tracked ball's recorded positions and velocities equal those of a fresh run of
+// the same spec, exactly, at every recorded step up to `upTo`.
+void expectTrackIsAFreshRun(const RunEngine& engine, const ab::RunSpec& spec, long long upTo)
+{
+    const std::vector<ab::State> fresh = testing::record(spec, upTo);
+    engine.read([&](const ab::ui::Recording& rec, const ab::ui::Frame&) {
+        const ab::ui::MotionTrack& track = rec.track();
+        QCOMPARE(track.steps().back(), upTo);
+        for (std::size_t i = 0; i < track.size(); ++i) {
+            const auto& s = fresh[static_cast<std::size_t>(track.steps()[i])];
+            // Exact equality: QCOMPARE's fuzzy compare of doubles would allow 1e-12.
+            for (int a = 0; a < 3; ++a) {
+                QVERIFY2(track.p(a)[i] == s.p(a, 0), qPrintable(QString("position at step %1").arg(track.steps()[i])));
+                QVERIFY2(track.v(a)[i] == s.v(a, 0), qPrintable(QString("velocity at step %1").arg(track.steps()[i])));
+            }
+            QVERIFY(track.t()[i] == s.t);
+        }
+    });
+}
+
+} // namespace
+
+class RunEngineFork : public QObject {
+    Q_OBJECT
+
+private slots:
+    void forkedRunIsTheFreshRunBitForBit_data()
+    {
+        QTest::addColumn<int>("scene");
+        QTest::addColumn<int>("model");
+        QTest::addColumn<qulonglong>("keyframeBudget");
+        // A budget for two keyframes only: the fork rebuilds its state by re-taking up to
+        // 64 steps from an earlier keyframe. The report's stage 4 carries per-ball bounce
+        // counters and a seeded start, stage 1 its shared counter and the bounce limit.
+        const auto tiny = qulonglong(2 * (6 * sizeof(double) + sizeof(int)) * 30);
+        QTest::newRow("many-balls report, rebuilt") << int(SceneId::ManyBalls) << int(ab::ModelKind::Report) << tiny;
+        QTest::newRow("bounce1d report, rebuilt")
+            << int(SceneId::Bounce1d) << int(ab::ModelKind::Report) << qulonglong(2 * 52);
+        QTest::newRow("box3d physical, every state kept")
+            << int(SceneId::Box3d) << int(ab::ModelKind::Physical) << qulonglong(RunEngine::defaultKeyframeBudget);
+    }
+
+    void forkedRunIsTheFreshRunBitForBit()
+    {
+        QFETCH(int, scene);
+        QFETCH(int, model);
+        QFETCH(qulonglong, keyframeBudget);
+        const auto id = static_cast<SceneId>(scene);
+        ab::RunSpec spec = testing::spec(id,
+                                         id == SceneId::ManyBalls ? std::initializer_list<std::string>{"n=30"}
+                                                                  : std::initializer_list<std::string>{},
+                                         static_cast<ab::ModelKind>(model));
+        RunEngine engine(ab::makeSimulation(spec), 1000, 0, ab::ui::Recording::defaultFrameBudget,
+                         std::size_t(keyframeBudget));
+        stepTo(engine, 120);
+        engine.resumeFrom(77);
+        QTRY_COMPARE(engine.status().steps, 77LL);
+        engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame& current) {
+            QVERIFY(rec.track().steps().back() < 77); // what came after is dropped
+            QVERIFY(rec.frames().back().step < 77);
+            QCOMPARE(current.step, 77LL);
+        });
+        stepTo(engine, 90);
+        expectTrackIsAFreshRun(engine, spec, 89); // step 90's state is final after its step
+        QVERIFY(!engine.status().finished);
+    }
+
+    void goingBackToTheStartRestartsTheSameRun()
+    {
+        const ab::RunSpec spec = testing::spec(SceneId::TwoBalls);
+        RunEngine engine(ab::makeSimulation(spec), 1000, 1);
+        stepTo(engine, 40);
+        engine.resumeFrom(0);
+        QTRY_COMPARE(engine.status().steps, 0LL);
+        QCOMPARE(engine.status().t, 0.0);
+        engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame&) { QVERIFY(rec.empty()); });
+        stepTo(engine, 41);
+        engine.read([&](const ab::ui::Recording& rec, const ab::ui::Frame&) {
+            const std::vector<ab::State> fresh = testing::record(spec, 40);
+            QVERIFY(rec.track().p(2).back() == fresh.back().p(2, 1));
+        });
+    }
+
+    void aFinishedRunGoesOnAfterGoingBack()
+    {
+        const ab::RunSpec spec = testing::spec(SceneId::Bounce1d);
+        RunEngine engine(ab::makeSimulation(spec), 30, 0);
+        stepTo(engine, 30);
+        QTRY_VERIFY(engine.status().finished);
+        engine.resumeFrom(10);
+        QTRY_COMPARE(engine.status().steps, 10LL);
+        QVERIFY(!engine.status().finished);
+        engine.play(1e6);
+        QTRY_VERIFY(engine.status().finished);
+        expectTrackIsAFreshRun(engine, spec, 30);
+    }
+
+    void pressingStepWhileLookingBackForksAtTheMomentShown()
+    {
+        ab::ui::MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        for (int i = 0; i < 100; ++i)
+            w.controller().stepOnce();
+        QTRY_COMPARE(w.controller().status().steps, 100LL);
+        w.controller().poll();
+        QSlider* time = w.transport()->timeSlider();
+        time->setValue(time->maximum() * 3 / 10); // stage 1 counts steps: about t = 30
+        QVERIFY(w.transport()->viewTime().has_value());
+        const double looked = *w.transport()->viewTime();
+        QTest::keyClick(&w, Qt::Key_Right);
+        // The frame shown is the last one at or before the slider's time: step floor(t).
+        const auto expected = static_cast<long long>(std::floor(looked)) + 1;
+        QTRY_COMPARE(w.controller().status().steps, expected);
+        QVERIFY(!w.transport()->viewTime().has_value()); // live again, at the fork
+        QVERIFY(w.statusBar()->currentMessage().contains("Went back"));
+        QVERIFY(std::abs(w.controller().status().t - double(expected)) < 1e-12);
+    }
+};
+
+QTEST_MAIN(RunEngineFork)
+#include "test_run_engine.moc"
