@@ -30,8 +30,8 @@ ParamSpec real(std::string key, std::string symbol, std::string unit, double def
 ParamSpec integer(std::string key, std::string symbol, double def, double min, double max, std::string equation,
                   std::string meaning, unsigned models)
 {
-    ParamSpec s = real(std::move(key), std::move(symbol), "1", def, min, max, std::move(equation), std::move(meaning),
-                       models);
+    ParamSpec s =
+        real(std::move(key), std::move(symbol), "1", def, min, max, std::move(equation), std::move(meaning), models);
     s.kind = ParamKind::Integer;
     return s;
 }
@@ -56,8 +56,8 @@ ParamSpec positive(ParamSpec spec)
 
 const std::vector<const SceneInfo*>& allScenes()
 {
-    static const std::array<SceneInfo, 4> infos = {scenes::makeBounce1d(), scenes::makeBox3d(),
-                                                   scenes::makeTwoBalls(), scenes::makeManyBalls()};
+    static const std::array<SceneInfo, 4> infos = {scenes::makeBounce1d(), scenes::makeBox3d(), scenes::makeTwoBalls(),
+                                                   scenes::makeManyBalls()};
     static const std::vector<const SceneInfo*> list = {&infos[0], &infos[1], &infos[2], &infos[3]};
     return list;
 }
@@ -100,6 +100,11 @@ std::string_view keyOf(const std::array<std::pair<E, std::string_view>, N>& keys
 
 constexpr std::array<std::pair<ModelKind, std::string_view>, 2> modelKeys{
     {{ModelKind::Report, "report"}, {ModelKind::Physical, "physical"}}};
+constexpr std::array<std::pair<ModelKind, std::string_view>, 2> modelTitles{
+    {{ModelKind::Report, "the report's own rules"}, {ModelKind::Physical, "textbook rigid balls"}}};
+constexpr std::array<std::pair<ModelKind, std::string_view>, 2> modelSummaries{
+    {{ModelKind::Report, "the report's own discrete rules, bounce counters and all (one scheme per stage)"},
+     {ModelKind::Physical, "textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule"}}};
 constexpr std::array<std::pair<Integrator, std::string_view>, 7> integratorKeys{{
     {Integrator::Euler, "euler"},
     {Integrator::SymplecticEuler, "symplectic-euler"},
@@ -125,15 +130,61 @@ constexpr std::array<std::pair<Broadphase, std::string_view>, 2> broadphaseKeys{
 
 } // namespace
 
-std::string_view modelKey(ModelKind m) { return keyOf(modelKeys, m); }
-std::optional<ModelKind> parseModel(std::string_view key) { return parseKey(modelKeys, key); }
-std::string_view integratorKey(Integrator i) { return keyOf(integratorKeys, i); }
-std::optional<Integrator> parseIntegrator(std::string_view key) { return parseKey(integratorKeys, key); }
-std::string_view integratorTitle(Integrator i) { return keyOf(integratorTitles, i); }
-std::string_view impactModeKey(ImpactMode m) { return keyOf(impactKeys, m); }
-std::optional<ImpactMode> parseImpactMode(std::string_view key) { return parseKey(impactKeys, key); }
-std::string_view broadphaseKey(Broadphase b) { return keyOf(broadphaseKeys, b); }
-std::optional<Broadphase> parseBroadphase(std::string_view key) { return parseKey(broadphaseKeys, key); }
+std::string_view modelKey(ModelKind m)
+{
+    return keyOf(modelKeys, m);
+}
+std::optional<ModelKind> parseModel(std::string_view key)
+{
+    return parseKey(modelKeys, key);
+}
+std::string_view modelTitle(ModelKind m)
+{
+    return keyOf(modelTitles, m);
+}
+std::string_view modelSummary(ModelKind m)
+{
+    return keyOf(modelSummaries, m);
+}
+std::string_view integratorKey(Integrator i)
+{
+    return keyOf(integratorKeys, i);
+}
+std::optional<Integrator> parseIntegrator(std::string_view key)
+{
+    return parseKey(integratorKeys, key);
+}
+std::string_view integratorTitle(Integrator i)
+{
+    return keyOf(integratorTitles, i);
+}
+std::string_view impactModeKey(ImpactMode m)
+{
+    return keyOf(impactKeys, m);
+}
+std::optional<ImpactMode> parseImpactMode(std::string_view key)
+{
+    return parseKey(impactKeys, key);
+}
+std::string_view broadphaseKey(Broadphase b)
+{
+    return keyOf(broadphaseKeys, b);
+}
+std::optional<Broadphase> parseBroadphase(std::string_view key)
+{
+    return parseKey(broadphaseKeys, key);
+}
+
+const std::vector<ModelKind>& allModels()
+{
+    static const std::vector<ModelKind> list = [] {
+        std::vector<ModelKind> l;
+        for (const auto& [m, key] : modelKeys)
+            l.push_back(m);
+        return l;
+    }();
+    return list;
+}
 
 const std::vector<Integrator>& allIntegrators()
 {

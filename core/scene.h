@@ -32,14 +32,14 @@ struct Equation {
 // Something a reader of the report must know: a typo in a printed equation and what the
 // product implements instead, or a choice the report leaves open.
 struct ReportNote {
-    std::string where;  // "eq 2.16"
+    std::string where; // "eq 2.16"
     std::string text;
 };
 
 struct SceneInfo {
     SceneId id;
-    std::string key;       // contract id: bounce1d, box3d, two-balls, many-balls
-    int stage = 0;         // 1..4, the report's order
+    std::string key; // contract id: bounce1d, box3d, two-balls, many-balls
+    int stage = 0;   // 1..4, the report's order
     std::string title;
     std::string reportRef; // sections and appendices of the report
     std::string summary;   // two or three sentences for the stage navigator
@@ -67,6 +67,11 @@ const SceneInfo* findScene(std::string_view key);
 
 std::string_view modelKey(ModelKind m);
 std::optional<ModelKind> parseModel(std::string_view key);
+// Every model, in the order the front ends list them, with a few words and a sentence
+// each: the window's model list and `list` read these.
+const std::vector<ModelKind>& allModels();
+std::string_view modelTitle(ModelKind m);   // "the report's own rules"
+std::string_view modelSummary(ModelKind m); // one sentence on what the model is
 std::string_view integratorKey(Integrator i);
 std::optional<Integrator> parseIntegrator(std::string_view key);
 std::string_view integratorTitle(Integrator i);

@@ -62,10 +62,10 @@ int listCommand(Args& args, std::ostream& out, std::ostream&)
            "vectors as x,y,z. Ranges are inclusive; '(' marks an exclusive lower bound.\n\n";
     for (const SceneInfo* s : allScenes())
         listScene(*s, out);
-    out << "Models:\n"
-           "  report    the report's own discrete rules, bounce counters and all (one scheme per stage)\n"
-           "  physical  textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule\n\n"
-           "Integrators (physical model):\n";
+    out << "Models:\n";
+    for (ModelKind m : allModels())
+        out << "  " << std::left << std::setw(10) << modelKey(m) << modelSummary(m) << "\n";
+    out << "\nIntegrators (physical model):\n";
     for (Integrator i : allIntegrators())
         out << "  " << std::left << std::setw(18) << integratorKey(i) << integratorTitle(i) << "\n";
     out << "\nImpact modes: located (time of impact found inside the step), step-end (as the report)\n"

@@ -544,14 +544,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
 <context>
     <name>ab::ui::RunOptionsPanel</name>
     <message>
-        <source>report: the report&apos;s own rules</source>
-        <translation>report: rapportens egna regler</translation>
-    </message>
-    <message>
-        <source>physical: textbook rigid balls</source>
-        <translation>physical: stela bollar enligt läroboken</translation>
-    </message>
-    <message>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
@@ -1821,6 +1813,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>The report&apos;s stage 3 (Appendix C): two balls of radius 1 m start at opposite walls, at (2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and meet along z. Instead of eqs 2.4-2.11 the report&apos;s code swaps the two velocities and scales them by 0.95; run the physical model beside it to see the difference.</source>
         <translation>Rapportens etapp 3 (bilaga C): två bollar med radien 1 m startar vid motsatta väggar, i (2, 20, 2) m och (2, 20, 298) m, med hastigheterna (10, 0, 15) och (10, 0, -15) m/s, och möts längs z. I stället för ekv. 2.4-2.11 byter rapportens kod plats på de två hastigheterna och skalar dem med 0.95; kör den fysikaliska modellen bredvid för att se skillnaden.</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rules</source>
+        <translation>rapportens egna regler</translation>
+    </message>
+    <message>
+        <source>textbook rigid balls</source>
+        <translation>stela bollar enligt läroboken</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own discrete rules, bounce counters and all (one scheme per stage)</source>
+        <translation>rapportens egna diskreta regler, med studsräknare och allt (ett schema per etapp)</translation>
+    </message>
+    <message>
+        <source>textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule</source>
+        <translation>läroboksfysik för stela bollar: impulser som bevarar rörelsemängden, en fysikalisk viloregel</translation>
     </message>
 </context>
 <context>

@@ -58,7 +58,7 @@ const std::set<QString>& sameInBothLanguages()
         }
         for (ab::Integrator i : ab::allIntegrators())
             addTokens(ab::integratorKey(i));
-        for (ab::ModelKind m : {ab::ModelKind::Report, ab::ModelKind::Physical})
+        for (ab::ModelKind m : ab::allModels())
             addTokens(ab::modelKey(m));
         for (ab::ImpactMode m : {ab::ImpactMode::Located, ab::ImpactMode::StepEnd})
             addTokens(ab::impactModeKey(m));

@@ -211,6 +211,11 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "y: gravity, Euler step"),
     QT_TRANSLATE_NOOP("core", "y: moves with the new velocity (semi-implicit)"),
     QT_TRANSLATE_NOOP("core", "z of a fixed tangent with x = y = 0.3"),
+    // The models' titles and summaries.
+    QT_TRANSLATE_NOOP("core", "the report's own rules"),
+    QT_TRANSLATE_NOOP("core", "textbook rigid balls"),
+    QT_TRANSLATE_NOOP("core", "the report's own discrete rules, bounce counters and all (one scheme per stage)"),
+    QT_TRANSLATE_NOOP("core", "textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule"),
     // The built-in presets' names and descriptions (resources/presets/*.json).
     QT_TRANSLATE_NOOP("core", "Stage 1 as in the report: a ball bouncing on a floor"),
     QT_TRANSLATE_NOOP(

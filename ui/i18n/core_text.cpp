@@ -41,6 +41,10 @@ std::vector<std::string> coreDisplayedStrings()
             add(p.unit);
         }
     }
+    for (ModelKind m : allModels()) {
+        add(modelTitle(m));
+        add(modelSummary(m));
+    }
     for (Integrator i : allIntegrators())
         add(integratorTitle(i));
     for (const BuiltinPreset& b : builtinPresets()) {

@@ -19,7 +19,8 @@ QString coreText(std::string_view text);
 
 // Every string of the core's tables that the window shows: scene titles, report
 // references, summaries, units, equation meanings, notes, parameter meanings and
-// references, integrator titles, the built-in presets' names and descriptions.
+// references, model titles and summaries, integrator titles, the built-in presets' names and
+// descriptions.
 std::vector<std::string> coreDisplayedStrings();
 
 // The source strings listed for lupdate in core_strings.cpp.

@@ -18,8 +18,6 @@ QString qs(std::string_view s)
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-// The models the core names (ModelKind has no list of its own).
-constexpr ModelKind models[] = {ModelKind::Report, ModelKind::Physical};
 constexpr ImpactMode impactModes[] = {ImpactMode::Located, ImpactMode::StepEnd};
 
 void selectData(QComboBox* box, int value)
@@ -40,10 +38,10 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
 
     model_ = new QComboBox;
     model_->setObjectName("modelCombo");
-    model_->addItem(tr("report: the report's own rules"), int(ModelKind::Report));
-    model_->addItem(tr("physical: textbook rigid balls"), int(ModelKind::Physical));
-    for (ModelKind m : models)
-        model_->setItemData(model_->findData(int(m)), qs(modelKey(m)), Qt::ToolTipRole);
+    for (ModelKind m : allModels()) {
+        model_->addItem(QStringLiteral("%1: %2").arg(qs(modelKey(m)), coreText(modelTitle(m))), int(m));
+        model_->setItemData(model_->count() - 1, coreText(modelSummary(m)), Qt::ToolTipRole);
+    }
     form->addRow(tr("Model"), model_);
 
     integrator_ = new QComboBox;
