@@ -317,7 +317,7 @@ void MainWindow::runReplaced()
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
     readout_->setUnits(coreText(info.timeUnit), coreText(info.lengthUnit));
-    charts_->configure(info, layout.balls, ball, controller_.plannedEnd());
+    charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
@@ -329,10 +329,16 @@ void MainWindow::runReplaced()
     refresh();
 }
 
+ChartUnits MainWindow::chartUnits() const
+{
+    const ConservationMeter meter(controller_.engine().simulation());
+    return ChartUnits{meter.perUnitMass(), meter.hasSpring()};
+}
+
 void MainWindow::ballSelected(int ball)
 {
     const SceneLayout& layout = controller_.layout();
-    charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd());
+    charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_)
         view_->setSelected(ball);

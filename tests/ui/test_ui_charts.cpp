@@ -5,6 +5,7 @@
 // non-finite state without ever recording it.
 #include "support/sim_helpers.h"
 
+#include "core/diagnostics/conservation.h"
 #include "ui/charts/downsample.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
@@ -96,7 +97,8 @@ private slots:
     {
         ab::ui::MotionTrack track(8);
         for (long long step = 0; step <= 100; ++step)
-            track.add(step, 0.5 * double(step), Eigen::Vector3d(double(step), 0, 0), Eigen::Vector3d::Zero(), 0.0);
+            track.add(step, 0.5 * double(step), Eigen::Vector3d(double(step), 0, 0), Eigen::Vector3d::Zero(),
+                      ab::ConservationSample{});
         QVERIFY(track.size() <= 8);
         QCOMPARE(track.steps().front(), 0LL);
         QCOMPARE(track.stride(), 16LL); // 101 samples into 8: stride 1 -> 16
@@ -105,27 +107,6 @@ private slots:
             QCOMPARE(track.p(0)[i], double(track.steps()[i])); // samples kept whole, not averaged
             QCOMPARE(track.t()[i], 0.5 * double(track.steps()[i]));
         }
-    }
-
-    void energyPerMassIsKineticPlusPotentialAboveTheFloor()
-    {
-        // One ball 10 m above the floor moving at (3, 4, 0) m/s: |v|^2/2 + g h = 12.5 + 98.2.
-        ab::RunSpec spec(ab::SceneId::Box3d);
-        const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
-        ab::State s;
-        s.resize(1);
-        s.p.col(0) = Eigen::Vector3d(5, 10, 5);
-        s.v.col(0) = Eigen::Vector3d(3, 4, 0);
-        QVERIFY(std::abs(ab::ui::energyPerMass(s, layout) - (12.5 + 9.82 * 10.0)) < 1e-12);
-        // Stage 4 measures height from its floor at -box/2.
-        ab::RunSpec many(ab::SceneId::ManyBalls);
-        many.params.parseAssignment("n=2");
-        const ab::ui::SceneLayout manyLayout = ab::ui::layoutFor(many);
-        QCOMPARE(manyLayout.floorY, -50.0);
-        ab::State two;
-        two.resize(2);
-        two.p.row(1).setConstant(-50.0);
-        QCOMPARE(ab::ui::energyPerMass(two, manyLayout), 0.0);
     }
 
     void layoutFollowsTheScenesSize()
@@ -150,7 +131,8 @@ private slots:
         spec.params.parseAssignment("n=10");
         const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
         const std::size_t frameBytes = 6 * sizeof(float) * 10;
-        ab::ui::Recording rec(layout, 0, 20 * frameBytes);
+        const auto sim = ab::makeSimulation(spec);
+        ab::ui::Recording rec(layout, ab::ConservationMeter(*sim), 0, 20 * frameBytes);
         QCOMPARE(rec.maxFrames(), std::size_t(20));
         for (long long step = 0; step <= 100; ++step) {
             ab::State s;
@@ -173,7 +155,8 @@ private slots:
     void followingAnotherBallRebuildsItsTrackFromTheFrames()
     {
         ab::RunSpec spec(ab::SceneId::TwoBalls);
-        ab::ui::Recording rec(ab::ui::layoutFor(spec), 0);
+        const auto sim = ab::makeSimulation(spec);
+        ab::ui::Recording rec(ab::ui::layoutFor(spec), ab::ConservationMeter(*sim), 0);
         for (long long step = 0; step < 5; ++step) {
             ab::State s;
             s.t = double(step);
@@ -259,10 +242,11 @@ private slots:
         // Appendix A before the first bounce: v[n] = -0.0982 n (eq 2.15), p[n] from eq 2.16.
         const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d);
         ab::ui::MotionTrack track;
-        const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
         long long i = 0;
         for (const ab::State& s : testing::record(spec, 150))
-            track.add(i++, s.t, s.p.col(0), s.v.col(0), ab::ui::energyPerMass(s, layout));
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
         ab::ui::MotionChart chart(ab::ui::ChartKind::Velocity);
         chart.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
         chart.setTimeSpan(2000);
@@ -312,15 +296,23 @@ private slots:
 
     void motionCsvHasTheShownAxesAndEverySample()
     {
+        ab::ConservationSample scene;
+        scene.energy = {3.0, 4.0, 0.0}; // kinetic, potential, spring: total 7
+        scene.momentum = Eigen::Vector3d(0.5, -1, 2);
+        scene.moving = 2;
+        scene.impacts = 9;
         ab::ui::MotionTrack track;
-        track.add(0, 0.0, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6), 7.0);
-        track.add(1, 0.5, Eigen::Vector3d(1, 2.5, 3), Eigen::Vector3d(4, 5, 6), 7.0);
+        track.add(0, 0.0, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6), scene);
+        track.add(1, 0.5, Eigen::Vector3d(1, 2.5, 3), Eigen::Vector3d(4, 5, 6), scene);
         std::ostringstream vertical, full;
         ab::ui::writeMotionCsv(vertical, track, 1, 0);
+        const std::string header = "energy_total,energy_kinetic,energy_potential,energy_spring,momentum_x,"
+                                   "momentum_y,momentum_z,moving,impacts\n";
         QCOMPARE(QString::fromStdString(vertical.str()),
-                 QString("t,ball,y,vy,energy_per_mass\n0,0,2,5,7\n0.5,0,2.5,5,7\n"));
+                 QString::fromStdString("t,ball,y,vy," + header + "0,0,2,5,7,3,4,0,0.5,-1,2,2,9\n" +
+                                        "0.5,0,2.5,5,7,3,4,0,0.5,-1,2,2,9\n"));
         ab::ui::writeMotionCsv(full, track, 3, 1);
-        QVERIFY(full.str().rfind("t,ball,x,y,z,vx,vy,vz,energy_per_mass\n0,1,1,2,3,4,5,6,7\n", 0) == 0);
+        QVERIFY(full.str().rfind("t,ball,x,y,z,vx,vy,vz," + header + "0,1,1,2,3,4,5,6,7,", 0) == 0);
     }
 };
 

@@ -53,8 +53,9 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
         views_[slot(kind)] = view;
         splitter->addWidget(view);
     }
-    chart(ChartKind::Energy)->legend()->hide(); // one line, named by the title
-    splitter->setSizes({300, 300, 200});
+    applies_.fill(true);
+    wanted_.fill(true);
+    splitter->setSizes({300, 300, 260, 220, 220});
     layout->addWidget(splitter, 1);
 
     connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
@@ -63,7 +64,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     });
 }
 
-void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double tEnd)
+void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double tEnd, const ChartUnits& units)
 {
     updating_ = true;
     ball_->setRange(1, std::max(balls, 1));
@@ -71,10 +72,28 @@ void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double t
     ball_->setEnabled(balls > 1);
     updating_ = false;
     ballCount_->setText(tr("of %1").arg(balls));
-    for (MotionChart* c : charts_) {
-        c->configure(scene, ball);
-        c->setTimeSpan(tEnd);
+    for (ChartKind kind : allChartKinds()) {
+        const std::size_t i = slot(kind);
+        if (applies_[i])
+            wanted_[i] = !views_[i]->isHidden(); // the wish, as the View menu or a preset left it
+        applies_[i] = chartApplies(kind, scene.id);
+        views_[i]->setHidden(!(wanted_[i] && applies_[i]));
+        charts_[i]->configure(scene, ball, units);
+        charts_[i]->setTimeSpan(tEnd);
     }
+}
+
+void ChartPanel::setChartShown(ChartKind kind, bool on)
+{
+    const std::size_t i = slot(kind);
+    wanted_[i] = on;
+    views_[i]->setHidden(!(on && applies_[i]));
+}
+
+bool ChartPanel::chartShown(ChartKind kind) const
+{
+    const std::size_t i = slot(kind);
+    return applies_[i] ? !views_[i]->isHidden() : wanted_[i];
 }
 
 void ChartPanel::showTrack(const MotionTrack& track)

@@ -37,8 +37,8 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     energy_ = label("statusEnergy", 190);
     step_->setToolTip(tr("Wall time of one simulation step"));
     fps_->setToolTip(tr("Frames drawn per second by the 3D view"));
-    energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, summed over the balls, "
-                           "with the height measured from the floor"));
+    energy_->setToolTip(tr("Kinetic plus potential energy, summed over the balls, with the height measured "
+                           "from the floor: per unit mass in the report model, with the masses in the physical one"));
 }
 
 void StatusReadout::setUnits(const QString& time, const QString& length)
@@ -52,9 +52,13 @@ void StatusReadout::show(const EngineStatus& s)
     time_->setText(tr("t = %1 %2").arg(QString::number(s.t, 'f', s.t < 100 ? 2 : 1), timeUnit_));
     step_->setText(tr("step %1").arg(formatDuration(s.stepSeconds)));
     const QString sq = QString::fromUtf8("\u00b2");
-    energy_->setText(std::isfinite(s.energy)
-                         ? tr("E/m = %1 %2%3/%4%3").arg(QString::number(s.energy, 'g', 5), lengthUnit_, sq, timeUnit_)
-                         : tr("E/m = -"));
+    const QString value = QString::number(s.energy, 'g', 5);
+    if (!s.energyPerUnitMass) // the physical model's masses are in kg
+        energy_->setText(std::isfinite(s.energy) ? tr("E = %1 kg %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
+                                                 : tr("E = -"));
+    else
+        energy_->setText(std::isfinite(s.energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
+                                                 : tr("E/m = -"));
     if (!s.warning.empty()) {
         warning_->setStyleSheet("color: #b03020; font-weight: bold;");
         warning_->setText(tr("Stopped: %1").arg(QString::fromStdString(s.warning)));

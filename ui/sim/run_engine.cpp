@@ -34,12 +34,13 @@ void lowerThisThreadsPriority()
 } // namespace
 
 RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget)
-    : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())),
-      recording_(layout_, trackedBall, frameBudget), state_(sim_->start())
+    : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())), meter_(*sim_),
+      recording_(layout_, meter_, trackedBall, frameBudget), state_(sim_->start())
 {
-    current_ = makeFrame(0, state_, energyPerMass(state_, layout_));
+    current_ = makeFrame(0, state_, meter_);
     status_.t = state_.t;
-    status_.energy = current_.energy;
+    status_.energy = current_.scene.energy.total();
+    status_.energyPerUnitMass = meter_.perUnitMass();
     status_.finished = maxSteps_ <= 0;
     if (!finiteState(state_))
         finish("the start state holds a non-finite number");
@@ -185,9 +186,9 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
     std::swap(state_, next_);
     ++status_.steps;
     status_.stepSeconds = status_.stepSeconds == 0.0 ? seconds : 0.9 * status_.stepSeconds + 0.1 * seconds;
-    current_ = makeFrame(status_.steps, state_, energyPerMass(state_, layout_));
+    current_ = makeFrame(status_.steps, state_, meter_);
     status_.t = state_.t;
-    status_.energy = current_.energy;
+    status_.energy = current_.scene.energy.total();
     ++status_.version;
     if (status_.steps >= maxSteps_) {
         recording_.add(status_.steps, state_); // the last state, as runRecorded records it
