@@ -9,10 +9,13 @@
 #include "ui/charts/downsample.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
+#include "ui/panels/chart_panel.h"
 #include "ui/sim/recording.h"
 #include "ui/sim/run_engine.h"
 
+#include <QChartView>
 #include <QLineSeries>
+#include <QValueAxis>
 #include <QtTest>
 
 #include <cmath>
@@ -292,6 +295,107 @@ private slots:
         QCOMPARE(c[1].x(), 12.5);
         chart.setCursorTime(std::numeric_limits<double>::quiet_NaN());
         QVERIFY(chart.cursorLine()->points().isEmpty());
+    }
+
+    void chartsAreOfferedOnlyWhereTheyApply()
+    {
+        using ab::SceneId;
+        using ab::ui::ChartKind;
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Momentum, SceneId::Bounce1d));
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Momentum, SceneId::Box3d));
+        QVERIFY(ab::ui::chartApplies(ChartKind::Momentum, SceneId::TwoBalls));
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Activity, SceneId::TwoBalls));
+        QVERIFY(ab::ui::chartApplies(ChartKind::Activity, SceneId::ManyBalls));
+        for (ChartKind kind : ab::ui::allChartKinds())
+            QCOMPARE(ab::ui::parseChartKind(ab::ui::chartKey(kind)), std::optional<ChartKind>(kind));
+        // The panel hides what does not apply and keeps the View menu's wish for later.
+        ab::ui::ChartPanel panel;
+        panel.configure(ab::sceneInfo(SceneId::Bounce1d), 1, 0, 100.0);
+        QVERIFY(panel.chartView(ChartKind::Momentum)->isHidden());
+        QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
+        QVERIFY(!panel.chartView(ChartKind::Energy)->isHidden());
+        QVERIFY(panel.chartShown(ChartKind::Momentum)); // wished for, shown where it applies
+        panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
+        QVERIFY(!panel.chartView(ChartKind::Momentum)->isHidden());
+        QVERIFY(!panel.chartView(ChartKind::Activity)->isHidden());
+        panel.setChartShown(ChartKind::Activity, false);
+        panel.configure(ab::sceneInfo(SceneId::TwoBalls), 2, 0, 100.0);
+        panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
+        QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
+        QVERIFY(!panel.chartShown(ChartKind::Activity));
+    }
+
+    void energyChartDrawsKineticPotentialAndTotal()
+    {
+        // Stage 1's free fall: kinetic g^2 t^2 / 2 and potential g (h0 - g t^2 / 2) per unit
+        // mass, their sum constant at g h0 while the ball flies (eqs 2.1-2.2; the report's
+        // scheme conserves it to within g^2 dt^2 / 2 per step, at most 0.005 here).
+        const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d);
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
+        ab::ui::MotionTrack track;
+        long long i = 0;
+        for (const ab::State& s : testing::record(spec, 150))
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Energy);
+        chart.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
+        QCOMPARE(chart.shownAxes(), (std::vector<int>{0, 1, 2}));
+        QCOMPARE(chart.line(2)->name(), QString("total"));
+        QVERIFY(!chart.line(3)->isVisible()); // no spring floor
+        chart.setTimeSpan(150);
+        chart.showTrack(track, 600);
+        const double g = spec.params.real("g"), h0 = spec.params.real("h0");
+        const QList<QPointF> total = chart.line(2)->points();
+        QCOMPARE(total.size(), 151);
+        for (const QPointF& p : total)
+            QVERIFY(std::abs(p.y() - g * h0) <= 0.005 * g * h0);
+        for (const QPointF& p : chart.line(0)->points()) // v = -g t exactly (eq 2.15)
+            QVERIFY(std::abs(p.y() - 0.5 * g * g * p.x() * p.x()) <= 1e-9 * (1.0 + p.y()));
+        ab::ui::MotionChart spring(ab::ui::ChartKind::Energy);
+        spring.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0, ab::ui::ChartUnits{false, true});
+        QVERIFY(spring.line(3)->isVisible());
+        QVERIFY(spring.title().startsWith("Energy, all balls (kg"));
+    }
+
+    void impactRateIsTheCountOverTheWindow()
+    {
+        // Impacts since the start at t = 0..6: 0, 0, 1, 1, 3, 3, 4. Over a window of 2:
+        // at t = 4, (3 - 1) / 2 = 1; at t = 6, (4 - 3) / 2 = 0.5; at t = 1 the run is
+        // younger than the window: (0 - 0) / 1.
+        const long long counts[] = {0, 0, 1, 1, 3, 3, 4};
+        ab::ui::MotionTrack track;
+        for (long long i = 0; i < 7; ++i) {
+            ab::ConservationSample c;
+            c.impacts = counts[i];
+            track.add(i, double(i), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), c);
+        }
+        const std::vector<double> rate = ab::ui::impactRate(track, 2.0);
+        QCOMPARE(rate[1], 0.0);
+        QCOMPARE(rate[2], 0.5); // (1 - 0) / 2
+        QCOMPARE(rate[4], 1.0);
+        QCOMPARE(rate[6], 0.5);
+    }
+
+    void manyBallsActivityShowsMovingBallsAndImpacts()
+    {
+        const ab::RunSpec spec = testing::spec(ab::SceneId::ManyBalls, {"n=150"});
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
+        ab::ui::MotionTrack track;
+        long long i = 0;
+        for (const ab::State& s : testing::record(spec, 1000))
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Activity);
+        chart.configure(ab::sceneInfo(ab::SceneId::ManyBalls), 0);
+        chart.setTimeSpan(1000);
+        chart.showTrack(track, 600);
+        QVERIFY(chart.rateAxis());
+        QCOMPARE(chart.line(0)->points().front().y(), 150.0); // all move at the start
+        double peak = 0.0;
+        for (const QPointF& p : chart.line(1)->points())
+            peak = std::max(peak, p.y());
+        QVERIFY(peak > 0.0); // the balls reach the floor (50 units below) within 1000 frames
+        QVERIFY(chart.rateAxis()->max() >= peak);
     }
 
     void motionCsvHasTheShownAxesAndEverySample()
