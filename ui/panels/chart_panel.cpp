@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -46,7 +47,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
         auto* view = new QChartView(chart);
         view->setObjectName(QStringLiteral("chart-%1").arg(QString::fromLatin1(chartKey(kind).data())));
         view->setRenderHint(QPainter::Antialiasing);
-        view->setMinimumHeight(150);
+        view->setMinimumHeight(200); // title, legend and a readable plot (five charts need the scroll area)
         view->installEventFilter(this);
         view->viewport()->installEventFilter(this);
         charts_[slot(kind)] = chart;
@@ -56,7 +57,15 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     applies_.fill(true);
     wanted_.fill(true);
     splitter->setSizes({300, 300, 260, 220, 220});
-    layout->addWidget(splitter, 1);
+    // Up to five charts: when the window is too short for all of them at a readable
+    // height they scroll, rather than shrink until their labels are cut.
+    auto* scroll = new QScrollArea;
+    scroll->setObjectName("chartScroll");
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(splitter);
+    layout->addWidget(scroll, 1);
 
     connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
         if (!updating_)
