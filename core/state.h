@@ -22,6 +22,9 @@ struct State {
     std::vector<int> bounces;
     // One counter for the whole scene (the report's stages 1-3 share one `count`).
     long long count = 0;
+    // Impacts since the start, ball-wall and ball-ball, each pair contact once (filled by
+    // the many-balls models, report and physical; the charts' impacts per unit of time).
+    long long impacts = 0;
     // The report's bounce limit was reached: from here on the report zeroes the state.
     bool halted = false;
 

@@ -323,7 +323,7 @@ void MainWindow::runReplaced()
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
     readout_->setUnits(coreText(info.timeUnit), coreText(info.lengthUnit));
-    charts_->configure(info, layout.balls, ball, controller_.plannedEnd());
+    charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
@@ -335,10 +335,16 @@ void MainWindow::runReplaced()
     refresh();
 }
 
+ChartUnits MainWindow::chartUnits() const
+{
+    const ConservationMeter meter(controller_.engine().simulation());
+    return ChartUnits{meter.perUnitMass(), meter.hasSpring()};
+}
+
 void MainWindow::ballSelected(int ball)
 {
     const SceneLayout& layout = controller_.layout();
-    charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd());
+    charts_->configure(sceneInfo(scene_), layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_)
         view_->setSelected(ball);
@@ -379,10 +385,14 @@ bool MainWindow::resumeFromLookedBackMoment()
     const std::optional<double> viewT = transport_->viewTime();
     if (!viewT || !controller_.hasRun())
         return false;
-    std::optional<Frame> shown;
+    struct Moment {
+        long long step;
+        double t;
+    };
+    std::optional<Moment> shown;
     controller_.engine().read([&](const Recording& rec, const Frame&) {
         if (const Frame* f = rec.frameAt(*viewT))
-            shown = Frame{f->step, f->t, {}, {}, f->energy};
+            shown = Moment{f->step, f->t};
     });
     transport_->goLive();
     if (!shown || shown->step >= controller_.status().steps)

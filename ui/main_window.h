@@ -89,6 +89,7 @@ private:
     void showReference();
     void refresh();
     void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
+    ChartUnits chartUnits() const; // of the current run's model
     void exportInteractively(ChartKind kind, ExportFormat format);
     void exportViewInteractively();
     void showError(const QString& message);

@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
-// `chart`: the window's position, velocity or energy chart of one ball, rendered headless
-// from the same chart code (no OpenGL), as PNG or SVG.
+// `chart`: the window's position or velocity chart of one ball, or its energy, momentum
+// or activity chart of the scene, rendered headless from the same chart code (no
+// OpenGL), as PNG or SVG.
 #include "commands.h"
 
 #include "interrupt.h"
 #include "run_setup.h"
 
+#include "../../core/diagnostics/conservation.h"
 #include "../../core/io/atomic_file.h"
 #include "../../ui/charts/chart_export.h"
 #include "../../ui/charts/headless_app.h"
 #include "../../ui/charts/motion_chart.h"
-#include "../../ui/charts/scene_layout.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>
@@ -63,7 +64,7 @@ QSize readSize(Args& args)
 // Every state of the run into the chart's track, up to the first non-finite one.
 ui::MotionTrack simulate(Simulation& sim, const RunSetup& setup, int ball, std::ostream& err)
 {
-    const ui::SceneLayout layout = ui::layoutFor(setup.spec);
+    const ConservationMeter meter(sim);
     ui::MotionTrack track;
     long long index = 0;
     bool healthy = true;
@@ -73,7 +74,7 @@ ui::MotionTrack simulate(Simulation& sim, const RunSetup& setup, int ball, std::
             healthy = healthy && s.p.allFinite() && s.v.allFinite();
             if (!healthy)
                 return;
-            track.add(index++, s.t, s.p.col(ball), s.v.col(ball), ui::energyPerMass(s, layout));
+            track.add(index++, s.t, s.p.col(ball), s.v.col(ball), meter.measure(s));
         },
         [&] { return !healthy || interrupted(); });
     throwIfInterrupted();
@@ -94,6 +95,12 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
     const QSize size = readSize(args);
     args.finish();
 
+    if (!ui::chartApplies(kind, setup.spec.scene)) {
+        const std::string scene = sceneInfo(setup.spec.scene).key;
+        throw InputError("--chart: the " + std::string(ui::chartKey(kind)) + " chart is for " +
+                         (kind == ui::ChartKind::Momentum ? "two-balls and many-balls" : "many-balls") + " only, not " +
+                         scene);
+    }
     const auto sim = makeSimulation(setup.spec);
     const State start = sim->start();
     if (ballNumber > start.size())
@@ -106,7 +113,8 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
         throw std::logic_error("chart: the process has a QCoreApplication; charts need a QApplication");
     const ui::MotionTrack track = simulate(*sim, setup, ball, err);
     ui::MotionChart chart(kind);
-    chart.configure(sim->scene(), ball);
+    const ConservationMeter meter(*sim);
+    chart.configure(sim->scene(), ball, ui::ChartUnits{meter.perUnitMass(), meter.hasSpring()});
     chart.setTimeSpan(std::max(sim->dt() * static_cast<double>(setup.steps), sim->dt()));
     chart.showTrack(track, size.width());
     ui::exportChart(&chart, QString::fromStdString(path), size);

@@ -177,10 +177,12 @@ template <Integrator I> int flyLocated(double p[3], double v[3], double h, const
 // squared speed after the flight. A ball left at rest on the floor is marked as supported.
 template <Integrator I, typename Place>
 double flyRange(double* x, double* y, double* z, double* vx, double* vy, double* vz, int* rebounds,
-                std::uint8_t* supported, int begin, int end, double h, const Walls& w, bool located, const Place& place)
+                std::uint8_t* supported, int begin, int end, double h, const Walls& w, bool located, const Place& place,
+                long long& impacts)
 {
     double maxSpeed2 = 0.0;
     for (int i = begin; i < end; ++i) {
+        const int before = rebounds[i];
         double p[3] = {x[i] + vx[i] * h, y[i], z[i] + vz[i] * h};
         double v[3] = {vx[i], vy[i], vz[i]};
         flight<I>(p[1], v[1], -w.g, h);
@@ -201,6 +203,7 @@ double flyRange(double* x, double* y, double* z, double* vx, double* vy, double*
         if (resting && v[0] * v[0] + v[2] * v[2] < w.restSpeed * w.restSpeed)
             v[0] = v[2] = 0.0;
         supported[i] = resting;
+        impacts += rebounds[i] - before; // the wall rebounds of this flight
         place(i, p[0], p[1], p[2]);
         x[i] = p[0], y[i] = p[1], z[i] = p[2];
         vx[i] = v[0], vy[i] = v[1], vz[i] = v[2];
@@ -298,6 +301,7 @@ ManyBallsEngine::ManyBallsEngine(const ManyBallsSettings& settings)
     supported_.assign(static_cast<std::size_t>(n), 0);
     const int workers = pool_->size();
     workerMaxSpeed2_.assign(static_cast<std::size_t>(workers), 0.0);
+    workerImpacts_.assign(static_cast<std::size_t>(workers), 0);
     if (settings.broadphase == Broadphase::Grid) {
         pSpare_.setZero(3, n);
         vSpare_.setZero(3, n);
@@ -363,8 +367,12 @@ void ManyBallsEngine::step()
 {
     const int substeps = substepsFor(settings_.dt);
     const double h = settings_.dt / substeps;
+    std::fill(workerImpacts_.begin(), workerImpacts_.end(), 0);
     for (int k = 0; k < substeps; ++k)
         substep(h);
+    impacts_ = 0;
+    for (long long count : workerImpacts_)
+        impacts_ += count;
 }
 
 void ManyBallsEngine::substep(double h)
@@ -408,11 +416,12 @@ void ManyBallsEngine::fly(int block, int worker, double h)
     const bool located = settings_.impacts == ImpactMode::Located;
     const int begin = block * kBlock, end = std::min(settings_.n, begin + kBlock);
     double maxSpeed2 = 0.0;
+    long long& impacts = workerImpacts_[static_cast<std::size_t>(worker)];
     auto run = [&](auto integrator) {
         auto fly = [&](const auto& place) {
             maxSpeed2 =
                 flyRange<decltype(integrator)::value>(x, x + n, x + 2 * n, vx, vx + n, vx + 2 * n, rebounds_.data(),
-                                                      supported_.data(), begin, end, h, walls, located, place);
+                                                      supported_.data(), begin, end, h, walls, located, place, impacts);
         };
         if (settings_.broadphase == Broadphase::Grid)
             fly(grid_.placer(block));
@@ -541,6 +550,7 @@ void ManyBallsEngine::resolveList(const std::vector<Pair>& pairs, Pass pass, int
             if (bounces) {
                 ++rebounds_[a];
                 ++rebounds_[b];
+                ++workerImpacts_[static_cast<std::size_t>(worker)]; // the pair's impact, once
             }
             maxSpeed2 = std::max({maxSpeed2, speed2(a), speed2(b)});
         }
@@ -614,6 +624,7 @@ public:
         engine_.store(next);
         next.t = s.t + dt_;
         next.count = s.count;
+        next.impacts = s.impacts + engine_.impactsLastStep();
         next.halted = false;
     }
 

@@ -58,6 +58,8 @@ public:
     void store(State& s) const;
     // Advances every ball by settings.dt.
     void step();
+    // Rebounds during the last step(): off a wall, or a pair of balls (counted once).
+    long long impactsLastStep() const { return impacts_; }
 
     int size() const { return settings_.n; }
     const ManyBallsSettings& settings() const { return settings_; }
@@ -87,6 +89,8 @@ private:
     broadphase::UniformGrid grid_;
     std::vector<std::vector<broadphase::Pair>> pairs_; // per slab (grid) or per range of rows (all pairs)
     std::vector<double> workerMaxSpeed2_;              // largest squared speed each worker saw this substep
+    std::vector<long long> workerImpacts_;             // rebounds each worker resolved this step
+    long long impacts_ = 0;
     double maxSpeed_ = 0.0;
     long long substepsDone_ = 0;
 };

@@ -48,14 +48,22 @@ Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, co
     return a;
 }
 
-double energy(const World& w, const Vec3Array& p, const Vec3Array& v)
+KineticPotential energyParts(const World& w, const Vec3Array& p, const Vec3Array& v)
 {
-    double e = 0.0;
+    // E = sum 1/2 m |v|^2 + m g y: the work gravity -m g does on the way down to y = 0.
+    KineticPotential e;
     for (int i = 0; i < w.balls(); ++i) {
         const double m = w.mass[static_cast<std::size_t>(i)];
-        e += 0.5 * m * v.col(i).squaredNorm() + m * w.g * p(1, i);
+        e.kinetic += 0.5 * m * v.col(i).squaredNorm();
+        e.potential += m * w.g * p(1, i);
     }
     return e;
+}
+
+double energy(const World& w, const Vec3Array& p, const Vec3Array& v)
+{
+    const KineticPotential e = energyParts(w, p, v);
+    return e.kinetic + e.potential;
 }
 
 } // namespace ab::physical

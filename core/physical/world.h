@@ -64,7 +64,13 @@ const Wall* restingOn(const World& w, const Eigen::Vector3d& p, const Eigen::Vec
 // that presses into it, and Coulomb friction mu N opposes the sliding velocity.
 Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, const Wall* support);
 
-// Kinetic plus potential energy (zero at y = 0) of every ball.
+// Kinetic and potential energy (zero at y = 0) of every ball, summed over the balls.
+struct KineticPotential {
+    double kinetic = 0.0;
+    double potential = 0.0;
+};
+KineticPotential energyParts(const World& w, const Vec3Array& p, const Vec3Array& v);
+// Their sum.
 double energy(const World& w, const Vec3Array& p, const Vec3Array& v);
 
 } // namespace ab::physical

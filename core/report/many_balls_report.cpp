@@ -160,6 +160,7 @@ private:
             return;
         }
         ++b.bounces[i];
+        ++b.impacts;
     }
 
     // The lowest index j != i within c r of centre q, or -1.
@@ -185,6 +186,7 @@ private:
         resolveReportPair(pi, b.p.col(j), vi, vj, secondary_);
         b.v.col(i) = vi;
         b.v.col(j) = vj;
+        ++b.impacts; // one impact per pair resolved
         const int cap = static_cast<int>(maxBounces_ - 3);
         b.bounces[i] = std::min(b.bounces[i], cap);
         b.bounces[j] = std::min(b.bounces[j], cap);

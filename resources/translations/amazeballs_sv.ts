@@ -419,10 +419,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>hastighet (%1/%2)</translation>
     </message>
     <message>
-        <source>Energy per unit mass, all balls (%1/%2)</source>
-        <translation>Energi per massenhet, alla bollar (%1/%2)</translation>
-    </message>
-    <message>
         <source>E/m</source>
         <translation>E/m</translation>
     </message>
@@ -433,6 +429,62 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source> (closed form)</source>
         <translation> (sluten form)</translation>
+    </message>
+    <message>
+        <source>Energy per unit mass, all balls (%1)</source>
+        <translation>Energi per massenhet, alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>Energy, all balls (kg %1)</source>
+        <translation>Energi, alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <source>kinetic</source>
+        <translation>kinetisk</translation>
+    </message>
+    <message>
+        <source>potential</source>
+        <translation>potentiell</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>summa</translation>
+    </message>
+    <message>
+        <source>spring</source>
+        <translation>fjäder</translation>
+    </message>
+    <message>
+        <source>Total momentum per unit mass, all balls (%1)</source>
+        <translation>Total rörelsemängd per massenhet, alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>Total momentum, all balls (kg %1)</source>
+        <translation>Total rörelsemängd, alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>p/m</source>
+        <translation>p/m</translation>
+    </message>
+    <message>
+        <source>p</source>
+        <translation>p</translation>
+    </message>
+    <message>
+        <source>Moving balls and impacts</source>
+        <translation>Rörliga bollar och stötar</translation>
+    </message>
+    <message>
+        <source>moving balls</source>
+        <translation>rörliga bollar</translation>
+    </message>
+    <message>
+        <source>impacts per %1</source>
+        <translation>stötar per %1</translation>
     </message>
 </context>
 <context>
@@ -539,6 +591,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Preset not saved</source>
         <translation>Förinställningen sparades inte</translation>
+    </message>
+    <message>
+        <source>Momentum (two or more balls)</source>
+        <translation>Rörelsemängd (två eller fler bollar)</translation>
+    </message>
+    <message>
+        <source>Moving balls and impacts (many balls)</source>
+        <translation>Rörliga bollar och stötar (många bollar)</translation>
     </message>
 </context>
 <context>
@@ -864,10 +924,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Bilder per sekund som 3D-vyn ritar</translation>
     </message>
     <message>
-        <source>Kinetic plus potential energy per unit mass, summed over the balls, with the height measured from the floor</source>
-        <translation>Kinetisk plus potentiell energi per massenhet, summerad över bollarna, med höjden räknad från golvet</translation>
-    </message>
-    <message>
         <source>t = %1 %2</source>
         <translation>t = %1 %2</translation>
     </message>
@@ -906,6 +962,18 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Paused: %1</source>
         <translation>Pausad: %1</translation>
+    </message>
+    <message>
+        <source>Kinetic plus potential energy, summed over the balls, with the height measured from the floor: per unit mass in the report model, with the masses in the physical one</source>
+        <translation>Kinetisk plus potentiell energi, summerad över bollarna, med höjden räknad från golvet: per massenhet i rapportens modell, med massorna i den fysikaliska</translation>
+    </message>
+    <message>
+        <source>E = %1 kg %2%3/%4%3</source>
+        <translation>E = %1 kg %2%3/%4%3</translation>
+    </message>
+    <message>
+        <source>E = -</source>
+        <translation>E = -</translation>
     </message>
 </context>
 <context>

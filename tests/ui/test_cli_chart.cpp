@@ -90,6 +90,29 @@ private slots:
         QVERIFY(!QImage(png).isNull());
     }
 
+    void writesTheConservationChartsOfManyBalls()
+    {
+        QTemporaryDir dir;
+        const QString momentum = dir.filePath("momentum.png");
+        const QString activity = dir.filePath("activity.svg");
+        QCOMPARE(cli({"chart", "many-balls", "--chart", "momentum", "--out", momentum.toStdString(), "--steps", "300"})
+                     .status,
+                 0);
+        QImage image(momentum);
+        QVERIFY(!image.isNull());
+        QVERIFY(distinctColours(image) > 8);
+        QCOMPARE(cli({"chart", "many-balls", "--chart", "activity", "--out", activity.toStdString(), "--steps", "300"})
+                     .status,
+                 0);
+        QCOMPARE(svgRoot(activity), QString("svg"));
+        const QString two = dir.filePath("two.png");
+        QCOMPARE(cli({"chart", "two-balls", "--chart", "momentum", "--model", "physical", "--set", "m2=3", "--out",
+                      two.toStdString(), "--steps", "300"})
+                     .status,
+                 0);
+        QVERIFY(!QImage(two).isNull());
+    }
+
     void badInputExitsWith2AndWritesNothing_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -100,6 +123,10 @@ private slots:
         QTest::newRow("ball out of range")
             << QStringList{"--chart", "position", "--ball", "2"} << "--ball: 2 is outside";
         QTest::newRow("bad parameter") << QStringList{"--chart", "position", "--set", "k=7"} << "k: 7 is outside";
+        QTest::newRow("momentum of one ball")
+            << QStringList{"--chart", "momentum"} << "--chart: the momentum chart is for two-balls and many-balls only";
+        QTest::newRow("activity of one ball")
+            << QStringList{"--chart", "activity"} << "--chart: the activity chart is for many-balls only, not box3d";
         QTest::newRow("tiny width") << QStringList{"--chart", "position", "--width", "5"} << "--width";
     }
 

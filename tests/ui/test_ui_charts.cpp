@@ -5,13 +5,17 @@
 // non-finite state without ever recording it.
 #include "support/sim_helpers.h"
 
+#include "core/diagnostics/conservation.h"
 #include "ui/charts/downsample.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
+#include "ui/panels/chart_panel.h"
 #include "ui/sim/recording.h"
 #include "ui/sim/run_engine.h"
 
+#include <QChartView>
 #include <QLineSeries>
+#include <QValueAxis>
 #include <QtTest>
 
 #include <cmath>
@@ -96,7 +100,8 @@ private slots:
     {
         ab::ui::MotionTrack track(8);
         for (long long step = 0; step <= 100; ++step)
-            track.add(step, 0.5 * double(step), Eigen::Vector3d(double(step), 0, 0), Eigen::Vector3d::Zero(), 0.0);
+            track.add(step, 0.5 * double(step), Eigen::Vector3d(double(step), 0, 0), Eigen::Vector3d::Zero(),
+                      ab::ConservationSample{});
         QVERIFY(track.size() <= 8);
         QCOMPARE(track.steps().front(), 0LL);
         QCOMPARE(track.stride(), 16LL); // 101 samples into 8: stride 1 -> 16
@@ -105,27 +110,6 @@ private slots:
             QCOMPARE(track.p(0)[i], double(track.steps()[i])); // samples kept whole, not averaged
             QCOMPARE(track.t()[i], 0.5 * double(track.steps()[i]));
         }
-    }
-
-    void energyPerMassIsKineticPlusPotentialAboveTheFloor()
-    {
-        // One ball 10 m above the floor moving at (3, 4, 0) m/s: |v|^2/2 + g h = 12.5 + 98.2.
-        ab::RunSpec spec(ab::SceneId::Box3d);
-        const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
-        ab::State s;
-        s.resize(1);
-        s.p.col(0) = Eigen::Vector3d(5, 10, 5);
-        s.v.col(0) = Eigen::Vector3d(3, 4, 0);
-        QVERIFY(std::abs(ab::ui::energyPerMass(s, layout) - (12.5 + 9.82 * 10.0)) < 1e-12);
-        // Stage 4 measures height from its floor at -box/2.
-        ab::RunSpec many(ab::SceneId::ManyBalls);
-        many.params.parseAssignment("n=2");
-        const ab::ui::SceneLayout manyLayout = ab::ui::layoutFor(many);
-        QCOMPARE(manyLayout.floorY, -50.0);
-        ab::State two;
-        two.resize(2);
-        two.p.row(1).setConstant(-50.0);
-        QCOMPARE(ab::ui::energyPerMass(two, manyLayout), 0.0);
     }
 
     void layoutFollowsTheScenesSize()
@@ -150,7 +134,8 @@ private slots:
         spec.params.parseAssignment("n=10");
         const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
         const std::size_t frameBytes = 6 * sizeof(float) * 10;
-        ab::ui::Recording rec(layout, 0, 20 * frameBytes);
+        const auto sim = ab::makeSimulation(spec);
+        ab::ui::Recording rec(layout, ab::ConservationMeter(*sim), 0, 20 * frameBytes);
         QCOMPARE(rec.maxFrames(), std::size_t(20));
         for (long long step = 0; step <= 100; ++step) {
             ab::State s;
@@ -173,7 +158,8 @@ private slots:
     void followingAnotherBallRebuildsItsTrackFromTheFrames()
     {
         ab::RunSpec spec(ab::SceneId::TwoBalls);
-        ab::ui::Recording rec(ab::ui::layoutFor(spec), 0);
+        const auto sim = ab::makeSimulation(spec);
+        ab::ui::Recording rec(ab::ui::layoutFor(spec), ab::ConservationMeter(*sim), 0);
         for (long long step = 0; step < 5; ++step) {
             ab::State s;
             s.t = double(step);
@@ -259,10 +245,11 @@ private slots:
         // Appendix A before the first bounce: v[n] = -0.0982 n (eq 2.15), p[n] from eq 2.16.
         const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d);
         ab::ui::MotionTrack track;
-        const ab::ui::SceneLayout layout = ab::ui::layoutFor(spec);
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
         long long i = 0;
         for (const ab::State& s : testing::record(spec, 150))
-            track.add(i++, s.t, s.p.col(0), s.v.col(0), ab::ui::energyPerMass(s, layout));
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
         ab::ui::MotionChart chart(ab::ui::ChartKind::Velocity);
         chart.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
         chart.setTimeSpan(2000);
@@ -310,17 +297,126 @@ private slots:
         QVERIFY(chart.cursorLine()->points().isEmpty());
     }
 
+    void chartsAreOfferedOnlyWhereTheyApply()
+    {
+        using ab::SceneId;
+        using ab::ui::ChartKind;
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Momentum, SceneId::Bounce1d));
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Momentum, SceneId::Box3d));
+        QVERIFY(ab::ui::chartApplies(ChartKind::Momentum, SceneId::TwoBalls));
+        QVERIFY(!ab::ui::chartApplies(ChartKind::Activity, SceneId::TwoBalls));
+        QVERIFY(ab::ui::chartApplies(ChartKind::Activity, SceneId::ManyBalls));
+        for (ChartKind kind : ab::ui::allChartKinds())
+            QCOMPARE(ab::ui::parseChartKind(ab::ui::chartKey(kind)), std::optional<ChartKind>(kind));
+        // The panel hides what does not apply and keeps the View menu's wish for later.
+        ab::ui::ChartPanel panel;
+        panel.configure(ab::sceneInfo(SceneId::Bounce1d), 1, 0, 100.0);
+        QVERIFY(panel.chartView(ChartKind::Momentum)->isHidden());
+        QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
+        QVERIFY(!panel.chartView(ChartKind::Energy)->isHidden());
+        QVERIFY(panel.chartShown(ChartKind::Momentum)); // wished for, shown where it applies
+        panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
+        QVERIFY(!panel.chartView(ChartKind::Momentum)->isHidden());
+        QVERIFY(!panel.chartView(ChartKind::Activity)->isHidden());
+        panel.setChartShown(ChartKind::Activity, false);
+        panel.configure(ab::sceneInfo(SceneId::TwoBalls), 2, 0, 100.0);
+        panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
+        QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
+        QVERIFY(!panel.chartShown(ChartKind::Activity));
+    }
+
+    void energyChartDrawsKineticPotentialAndTotal()
+    {
+        // Stage 1's free fall: kinetic g^2 t^2 / 2 and potential g (h0 - g t^2 / 2) per unit
+        // mass, their sum constant at g h0 while the ball flies (eqs 2.1-2.2; the report's
+        // scheme conserves it to within g^2 dt^2 / 2 per step, at most 0.005 here).
+        const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d);
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
+        ab::ui::MotionTrack track;
+        long long i = 0;
+        for (const ab::State& s : testing::record(spec, 150))
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Energy);
+        chart.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
+        QCOMPARE(chart.shownAxes(), (std::vector<int>{0, 1, 2}));
+        QCOMPARE(chart.line(2)->name(), QString("total"));
+        QVERIFY(!chart.line(3)->isVisible()); // no spring floor
+        chart.setTimeSpan(150);
+        chart.showTrack(track, 600);
+        const double g = spec.params.real("g"), h0 = spec.params.real("h0");
+        const QList<QPointF> total = chart.line(2)->points();
+        QCOMPARE(total.size(), 151);
+        for (const QPointF& p : total)
+            QVERIFY(std::abs(p.y() - g * h0) <= 0.005 * g * h0);
+        for (const QPointF& p : chart.line(0)->points()) // v = -g t exactly (eq 2.15)
+            QVERIFY(std::abs(p.y() - 0.5 * g * g * p.x() * p.x()) <= 1e-9 * (1.0 + p.y()));
+        ab::ui::MotionChart spring(ab::ui::ChartKind::Energy);
+        spring.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0, ab::ui::ChartUnits{false, true});
+        QVERIFY(spring.line(3)->isVisible());
+        QVERIFY(spring.title().startsWith("Energy, all balls (kg"));
+    }
+
+    void impactRateIsTheCountOverTheWindow()
+    {
+        // Impacts since the start at t = 0..6: 0, 0, 1, 1, 3, 3, 4. Over a window of 2:
+        // at t = 4, (3 - 1) / 2 = 1; at t = 6, (4 - 3) / 2 = 0.5; at t = 1 the run is
+        // younger than the window: (0 - 0) / 1.
+        const long long counts[] = {0, 0, 1, 1, 3, 3, 4};
+        ab::ui::MotionTrack track;
+        for (long long i = 0; i < 7; ++i) {
+            ab::ConservationSample c;
+            c.impacts = counts[i];
+            track.add(i, double(i), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), c);
+        }
+        const std::vector<double> rate = ab::ui::impactRate(track, 2.0);
+        QCOMPARE(rate[1], 0.0);
+        QCOMPARE(rate[2], 0.5); // (1 - 0) / 2
+        QCOMPARE(rate[4], 1.0);
+        QCOMPARE(rate[6], 0.5);
+    }
+
+    void manyBallsActivityShowsMovingBallsAndImpacts()
+    {
+        const ab::RunSpec spec = testing::spec(ab::SceneId::ManyBalls, {"n=150"});
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
+        ab::ui::MotionTrack track;
+        long long i = 0;
+        for (const ab::State& s : testing::record(spec, 1000))
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Activity);
+        chart.configure(ab::sceneInfo(ab::SceneId::ManyBalls), 0);
+        chart.setTimeSpan(1000);
+        chart.showTrack(track, 600);
+        QVERIFY(chart.rateAxis());
+        QCOMPARE(chart.line(0)->points().front().y(), 150.0); // all move at the start
+        double peak = 0.0;
+        for (const QPointF& p : chart.line(1)->points())
+            peak = std::max(peak, p.y());
+        QVERIFY(peak > 0.0); // the balls reach the floor (50 units below) within 1000 frames
+        QVERIFY(chart.rateAxis()->max() >= peak);
+    }
+
     void motionCsvHasTheShownAxesAndEverySample()
     {
+        ab::ConservationSample scene;
+        scene.energy = {3.0, 4.0, 0.0}; // kinetic, potential, spring: total 7
+        scene.momentum = Eigen::Vector3d(0.5, -1, 2);
+        scene.moving = 2;
+        scene.impacts = 9;
         ab::ui::MotionTrack track;
-        track.add(0, 0.0, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6), 7.0);
-        track.add(1, 0.5, Eigen::Vector3d(1, 2.5, 3), Eigen::Vector3d(4, 5, 6), 7.0);
+        track.add(0, 0.0, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6), scene);
+        track.add(1, 0.5, Eigen::Vector3d(1, 2.5, 3), Eigen::Vector3d(4, 5, 6), scene);
         std::ostringstream vertical, full;
         ab::ui::writeMotionCsv(vertical, track, 1, 0);
+        const std::string header = "energy_total,energy_kinetic,energy_potential,energy_spring,momentum_x,"
+                                   "momentum_y,momentum_z,moving,impacts\n";
         QCOMPARE(QString::fromStdString(vertical.str()),
-                 QString("t,ball,y,vy,energy_per_mass\n0,0,2,5,7\n0.5,0,2.5,5,7\n"));
+                 QString::fromStdString("t,ball,y,vy," + header + "0,0,2,5,7,3,4,0,0.5,-1,2,2,9\n" +
+                                        "0.5,0,2.5,5,7,3,4,0,0.5,-1,2,2,9\n"));
         ab::ui::writeMotionCsv(full, track, 3, 1);
-        QVERIFY(full.str().rfind("t,ball,x,y,z,vx,vy,vz,energy_per_mass\n0,1,1,2,3,4,5,6,7\n", 0) == 0);
+        QVERIFY(full.str().rfind("t,ball,x,y,z,vx,vy,vz," + header + "0,1,1,2,3,4,5,6,7,", 0) == 0);
     }
 };
 

@@ -248,7 +248,8 @@ private slots:
         // 20000 samples: progress every 4096 lines; cancelled at the first report.
         MotionTrack track;
         for (long long i = 0; i <= 20000; ++i)
-            track.add(i, 0.01 * static_cast<double>(i), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0), 9.81);
+            track.add(i, 0.01 * static_cast<double>(i), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0),
+                      ab::ConservationSample{});
         QTemporaryDir dir;
         const QString path = dir.filePath("track.csv");
         int calls = 0;

@@ -20,10 +20,28 @@ namespace {
 
 // x, y, z in the colours of the 3D view's axis triad.
 const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
-const QColor energyColour(0x8e, 0x44, 0xad);
+// Kinetic, potential, total, spring; and the activity chart's two lines.
+const QColor energyColours[4] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
+                                 QColor(0x8c, 0x56, 0x4b)};
+const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
 
-constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
-    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"}};
+constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {{ChartKind::Position, "position"},
+                                                                {ChartKind::Velocity, "velocity"},
+                                                                {ChartKind::Energy, "energy"},
+                                                                {ChartKind::Momentum, "momentum"},
+                                                                {ChartKind::Activity, "activity"}};
+
+QColor lineColour(ChartKind kind, int line)
+{
+    switch (kind) {
+    case ChartKind::Energy:
+        return energyColours[line];
+    case ChartKind::Activity:
+        return activityColours[std::min(line, 1)];
+    default:
+        return axisColours[std::min(line, 2)];
+    }
+}
 
 void setMarkerVisible(QChart* chart, QLineSeries* series, bool visible)
 {
@@ -52,8 +70,21 @@ QString squared(const QString& unit)
 
 const std::vector<ChartKind>& allChartKinds()
 {
-    static const std::vector<ChartKind> kinds = {ChartKind::Position, ChartKind::Velocity, ChartKind::Energy};
+    static const std::vector<ChartKind> kinds = {ChartKind::Position, ChartKind::Velocity, ChartKind::Energy,
+                                                 ChartKind::Momentum, ChartKind::Activity};
     return kinds;
+}
+
+bool chartApplies(ChartKind kind, SceneId scene)
+{
+    switch (kind) {
+    case ChartKind::Momentum:
+        return scene == SceneId::TwoBalls || scene == SceneId::ManyBalls;
+    case ChartKind::Activity:
+        return scene == SceneId::ManyBalls;
+    default:
+        return true;
+    }
 }
 
 std::string_view chartKey(ChartKind kind)
@@ -85,12 +116,27 @@ MotionChart::MotionChart(ChartKind kind)
         s->setPen(pen); // after addSeries: adding applies the theme's pen
         return s;
     };
-    for (int a = 0; a < 3; ++a) {
-        const QColor colour = kind == ChartKind::Energy ? energyColour : axisColours[a];
-        lines_[a] = add(new QLineSeries, QPen(colour, 2.0));
+    for (int a = 0; a < 4; ++a) {
+        const QColor colour = lineColour(kind, a);
+        lines_[a] = add(new QLineSeries, QPen(colour, a == 2 && kind == ChartKind::Energy ? 2.4 : 2.0));
+        if (a == 3)
+            break;
         QPen dashed(colour.darker(130), 1.6, Qt::DashLine);
         references_[a] = add(new QLineSeries, dashed);
         setMarkerVisible(this, references_[a], false);
+    }
+    if (kind == ChartKind::Activity) {
+        // Impacts per unit of time on a second axis, on the right: their scale has
+        // nothing to do with a number of balls.
+        rateAxis_ = new QValueAxis;
+        addAxis(rateAxis_, Qt::AlignRight);
+        lines_[1]->detachAxis(valueAxis_);
+        lines_[1]->attachAxis(rateAxis_);
+        rateAxis_->setLabelFormat("%g");
+        rateAxis_->setLinePenColor(activityColours[1]);
+        rateAxis_->setLabelsColor(activityColours[1].darker(120));
+        valueAxis_->setLinePenColor(activityColours[0]);
+        valueAxis_->setLabelsColor(activityColours[0].darker(120));
     }
     add(cursor_, QPen(QColor(90, 90, 90), 1.2));
     setMarkerVisible(this, cursor_, false);
@@ -110,22 +156,41 @@ void MotionChart::applyFonts()
     setTitleFont(title);
     QFont labels = font();
     labels.setPointSizeF(9.5);
-    for (QValueAxis* axis : {timeAxis_, valueAxis_}) {
+    for (QValueAxis* axis : {timeAxis_, valueAxis_, rateAxis_}) {
+        if (!axis)
+            continue;
         axis->setLabelsFont(labels);
         axis->setTitleFont(labels);
     }
     legend()->setFont(labels);
 }
 
-void MotionChart::configure(const SceneInfo& scene, int ball)
+void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& units)
 {
-    static const char* names[3][3] = {{"x", "y", "z"}, {"vx", "vy", "vz"}, {"E/m", "", ""}};
-    shownAxes_ = kind_ == ChartKind::Energy ? std::vector<int>{0}
-                 : scene.axes == 1          ? std::vector<int>{1}
-                                            : std::vector<int>{0, 1, 2};
+    static const char* axisNames[3][3] = {{"x", "y", "z"}, {"vx", "vy", "vz"}, {"px", "py", "pz"}};
+    const std::vector<int> axes = scene.axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
+    switch (kind_) {
+    case ChartKind::Position:
+    case ChartKind::Velocity:
+        shownAxes_ = axes;
+        break;
+    case ChartKind::Energy:
+        shownAxes_ = units.spring ? std::vector<int>{0, 1, 3, 2} : std::vector<int>{0, 1, 2};
+        break;
+    case ChartKind::Momentum:
+        shownAxes_ = {0, 1, 2};
+        break;
+    case ChartKind::Activity:
+        shownAxes_ = {0, 1};
+        break;
+    }
     const QString time = coreText(scene.timeUnit);
     const QString length = coreText(scene.lengthUnit);
     const QString who = scene.ballCount == 1 ? tr("the ball") : tr("ball %1").arg(ball + 1);
+    // Energy is m |v|^2: mass length^2 / time^2; momentum m v: mass length / time.
+    const QString energyUnit = squared(length) + "/" + squared(time);
+    const QString momentumUnit = length + "/" + time;
+    QString names[4];
     switch (kind_) {
     case ChartKind::Position:
         setTitle(tr("Position of %1").arg(who));
@@ -136,23 +201,48 @@ void MotionChart::configure(const SceneInfo& scene, int ball)
         valueAxis_->setTitleText(tr("velocity (%1/%2)").arg(length, time));
         break;
     case ChartKind::Energy:
-        setTitle(tr("Energy per unit mass, all balls (%1/%2)").arg(squared(length), squared(time)));
-        valueAxis_->setTitleText(tr("E/m"));
+        setTitle(units.perUnitMass ? tr("Energy per unit mass, all balls (%1)").arg(energyUnit)
+                                   : tr("Energy, all balls (kg %1)").arg(energyUnit));
+        valueAxis_->setTitleText(units.perUnitMass ? tr("E/m") : tr("E"));
+        names[0] = tr("kinetic");
+        names[1] = tr("potential");
+        names[2] = tr("total");
+        names[3] = tr("spring");
+        break;
+    case ChartKind::Momentum:
+        setTitle(units.perUnitMass ? tr("Total momentum per unit mass, all balls (%1)").arg(momentumUnit)
+                                   : tr("Total momentum, all balls (kg %1)").arg(momentumUnit));
+        valueAxis_->setTitleText(units.perUnitMass ? tr("p/m") : tr("p"));
+        break;
+    case ChartKind::Activity:
+        setTitle(tr("Moving balls and impacts"));
+        valueAxis_->setTitleText(tr("moving balls"));
+        rateAxis_->setTitleText(tr("impacts per %1").arg(time));
+        names[0] = tr("moving balls");
+        names[1] = tr("impacts per %1").arg(time);
         break;
     }
     timeAxis_->setTitleText(tr("t (%1)").arg(time));
-    const int row = static_cast<int>(kind_);
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 4; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->clear();
-        lines_[a]->setName(QString::fromLatin1(names[row][a]));
+        if (a < 3 && names[a].isEmpty())
+            names[a] = QString::fromLatin1(axisNames[kind_ == ChartKind::Velocity   ? 1
+                                                     : kind_ == ChartKind::Momentum ? 2
+                                                                                    : 0][a]);
+        lines_[a]->setName(names[a]);
         lines_[a]->setVisible(shown);
         setMarkerVisible(this, lines_[a], shown);
-        references_[a]->clear();
-        references_[a]->setName(lines_[a]->name() + tr(" (closed form)"));
+        if (a < 3) {
+            references_[a]->clear();
+            references_[a]->setName(lines_[a]->name() + tr(" (closed form)"));
+        }
     }
     haveRange_ = false;
+    rateHi_ = 0.0;
     setNiceRange(valueAxis_, 0.0, 1.0, 6);
+    if (rateAxis_)
+        setNiceRange(rateAxis_, 0.0, 1.0, 6);
     sampleReference();
     placeCursor();
 }
@@ -174,15 +264,26 @@ void MotionChart::applyTimeRange()
     setNiceRange(timeAxis_, 0.0, tEnd_, ticks);
 }
 
-const std::vector<double>& MotionChart::column(const MotionTrack& track, int axis) const
+const std::vector<double>& MotionChart::column(const MotionTrack& track, int line)
 {
     switch (kind_) {
     case ChartKind::Position:
-        return track.p(axis);
+        return track.p(line);
     case ChartKind::Velocity:
-        return track.v(axis);
-    case ChartKind::Energy:
-        return track.energy();
+        return track.v(line);
+    case ChartKind::Energy: {
+        const std::vector<double>* parts[4] = {&track.kinetic(), &track.potential(), &track.energy(), &track.spring()};
+        return *parts[line];
+    }
+    case ChartKind::Momentum:
+        return track.momentum(line);
+    case ChartKind::Activity:
+        if (line == 0)
+            return track.moving();
+        // Impacts counted over the last 1/100 of the planned run: long enough to hold
+        // several impacts at the report's 150 balls, short enough to show how they die out.
+        rate_ = impactRate(track, tEnd_ / 100.0);
+        return rate_;
     }
     throw std::logic_error("chart kind without data");
 }
@@ -198,11 +299,22 @@ void MotionChart::showTrack(const MotionTrack& track, int columns)
         if (!points.isEmpty()) {
             const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
                                                       [](const QPointF& l, const QPointF& r) { return l.y() < r.y(); });
-            updateValueRange(lo->y(), hi->y());
+            if (kind_ == ChartKind::Activity && a == 1)
+                updateRateRange(hi->y());
+            else
+                updateValueRange(lo->y(), hi->y());
         }
         lines_[a]->replace(points); // replace(), not append(): append is quadratic in Qt Charts 6.4
     }
     placeCursor();
+}
+
+void MotionChart::updateRateRange(double hi)
+{
+    // From zero (a rate is never negative), growing only, as the value axis.
+    rateHi_ = std::max(rateHi_, hi);
+    const int ticks = std::clamp(int(plotArea().height() / 40.0), 4, 8);
+    setNiceRange(rateAxis_, 0.0, rateHi_ > 0.0 ? 1.05 * rateHi_ : 1.0, ticks);
 }
 
 void MotionChart::updateValueRange(double lo, double hi)
@@ -256,7 +368,7 @@ void MotionChart::setReference(const ReferenceMotion* reference, int columns)
 
 void MotionChart::sampleReference()
 {
-    const bool drawn = reference_ && kind_ != ChartKind::Energy;
+    const bool drawn = reference_ && (kind_ == ChartKind::Position || kind_ == ChartKind::Velocity);
     for (int a = 0; a < 3; ++a) {
         const bool shown = drawn && std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         QList<QPointF> points;

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The charts of the window and of `amazeballs-cli chart`, from one code path: position,
-// velocity or energy against time for the selected ball, one line per axis the scene
-// has (bounce1d: y alone), downsampled for drawing, a time cursor, and a dashed closed
-// form beside the simulation when one is given.
+// The charts of the window and of `amazeballs-cli chart`, from one code path: position
+// or velocity against time for the selected ball, one line per axis the scene has
+// (bounce1d: y alone); and what the whole scene conserves: kinetic, potential (and
+// spring) and total energy, total momentum per axis (scenes of two or more balls), and
+// the number of moving balls with the impacts per unit of time (many-balls). All are
+// downsampled for drawing, with a time cursor, and a dashed closed form beside the
+// position and velocity when one is given.
 #pragma once
 
 #include "motion_track.h"
@@ -24,11 +27,20 @@ class QValueAxis;
 
 namespace ab::ui {
 
-enum class ChartKind { Position, Velocity, Energy };
+enum class ChartKind { Position, Velocity, Energy, Momentum, Activity };
 
 const std::vector<ChartKind>& allChartKinds();
-std::string_view chartKey(ChartKind kind); // "position", "velocity", "energy"
+std::string_view chartKey(ChartKind kind); // "position", "velocity", "energy", "momentum", "activity"
 std::optional<ChartKind> parseChartKind(std::string_view key);
+// Whether the chart means something for the scene: momentum needs two balls or more
+// (one ball's momentum only shows gravity and the walls), activity needs many.
+bool chartApplies(ChartKind kind, SceneId scene);
+
+// What the energy and momentum charts are measured with (ConservationMeter's answers).
+struct ChartUnits {
+    bool perUnitMass = true; // the report model's equal masses; false: the physical model's kg
+    bool spring = false;     // the spring floor: its energy gets a line of its own
+};
 
 // A closed-form motion (from core/reference/ where the core has one): the ball's
 // position and velocity at time t, or nothing where the closed form does not apply.
@@ -47,7 +59,7 @@ public:
 
     ChartKind kind() const { return kind_; }
     // Axes, titles and units for `scene`, ball `ball` (0-based); clears the lines.
-    void configure(const SceneInfo& scene, int ball);
+    void configure(const SceneInfo& scene, int ball, const ChartUnits& units = {});
     // The time axis spans [0, tEnd] (the planned run), growing if the run goes past it.
     void setTimeSpan(double tEnd);
     // Redraws the lines from `track`, at most about 4 points per pixel column.
@@ -57,9 +69,13 @@ public:
     void setReference(const ReferenceMotion* reference, int columns = 600);
     bool hasReference() const { return reference_.has_value(); }
 
-    // The axes drawn: {1} for a vertical-only scene, {0, 1, 2} otherwise; the energy
-    // chart has one line, reported as axis 0.
+    // The lines drawn. Position, velocity: the axes, {1} for a vertical-only scene, {0,
+    // 1, 2} otherwise; momentum {0, 1, 2} (x, y, z). Energy: 0 kinetic, 1 potential,
+    // 2 total, 3 spring (when the spring floor is on). Activity: 0 moving balls (left
+    // axis), 1 impacts per unit of time (right axis).
     const std::vector<int>& shownAxes() const { return shownAxes_; }
+    QValueAxis* valueAxis() const { return valueAxis_; }
+    QValueAxis* rateAxis() const { return rateAxis_; } // activity only, else nullptr
     QLineSeries* line(int index) const { return lines_[static_cast<std::size_t>(index)]; }
     QLineSeries* referenceLine(int index) const { return references_[static_cast<std::size_t>(index)]; }
     QLineSeries* cursorLine() const { return cursor_; }
@@ -68,15 +84,17 @@ private:
     void applyFonts();
     void applyTimeRange();
     void updateValueRange(double lo, double hi);
+    void updateRateRange(double hi);
     void placeCursor();
     void sampleReference();
-    const std::vector<double>& column(const MotionTrack& track, int axis) const;
+    const std::vector<double>& column(const MotionTrack& track, int line);
     double component(const Kinematics& k, int axis) const;
 
     ChartKind kind_;
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
-    std::array<QLineSeries*, 3> lines_{};
+    QValueAxis* rateAxis_ = nullptr;
+    std::array<QLineSeries*, 4> lines_{};
     std::array<QLineSeries*, 3> references_{};
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
@@ -86,6 +104,8 @@ private:
     int referenceColumns_ = 600;
     double lo_ = 0.0, hi_ = 0.0;
     bool haveRange_ = false;
+    double rateHi_ = 0.0;
+    std::vector<double> rate_; // impacts per unit of time, from the last track shown
 };
 
 } // namespace ab::ui

@@ -2,26 +2,38 @@
 #include "motion_track.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <charconv>
 #include <stdexcept>
 
 namespace ab::ui {
 
 MotionTrack::MotionTrack(std::size_t capacity) : capacity_(std::max<std::size_t>(capacity, 4)) {}
 
+template <typename F> void MotionTrack::forEachColumn(F&& f)
+{
+    f(step_);
+    f(t_);
+    for (int a = 0; a < 3; ++a) {
+        f(p_[a]);
+        f(v_[a]);
+        f(momentum_[a]);
+    }
+    f(kinetic_);
+    f(potential_);
+    f(spring_);
+    f(energy_);
+    f(moving_);
+    f(impacts_);
+}
+
 void MotionTrack::clear()
 {
     stride_ = 1;
-    step_.clear();
-    t_.clear();
-    for (int a = 0; a < 3; ++a) {
-        p_[a].clear();
-        v_[a].clear();
-    }
-    energy_.clear();
+    forEachColumn([](auto& column) { column.clear(); });
 }
 
-void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, double energy)
+void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+                      const ConservationSample& scene)
 {
     if (!step_.empty() && step <= step_.back())
         throw std::logic_error("motion samples out of order");
@@ -32,8 +44,14 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
     for (int a = 0; a < 3; ++a) {
         p_[a].push_back(p[a]);
         v_[a].push_back(v[a]);
+        momentum_[a].push_back(scene.momentum[a]);
     }
-    energy_.push_back(energy);
+    kinetic_.push_back(scene.energy.kinetic);
+    potential_.push_back(scene.energy.potential);
+    spring_.push_back(scene.energy.spring);
+    energy_.push_back(scene.energy.total());
+    moving_.push_back(static_cast<double>(scene.moving));
+    impacts_.push_back(scene.impacts);
     while (t_.size() > capacity_)
         thin();
 }
@@ -41,38 +59,41 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
 void MotionTrack::truncateFrom(long long step)
 {
     const auto kept = static_cast<std::size_t>(std::lower_bound(step_.begin(), step_.end(), step) - step_.begin());
-    step_.resize(kept);
-    t_.resize(kept);
-    for (int a = 0; a < 3; ++a) {
-        p_[a].resize(kept);
-        v_[a].resize(kept);
-    }
-    energy_.resize(kept);
+    forEachColumn([kept](auto& column) { column.resize(kept); });
 }
 
 void MotionTrack::thin()
 {
     stride_ *= 2;
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < step_.size(); ++i) {
-        if (step_[i] % stride_ != 0)
-            continue;
-        step_[kept] = step_[i];
-        t_[kept] = t_[i];
-        for (int a = 0; a < 3; ++a) {
-            p_[a][kept] = p_[a][i];
-            v_[a][kept] = v_[a][i];
-        }
-        energy_[kept] = energy_[i];
-        ++kept;
+    std::vector<char> keep(step_.size());
+    for (std::size_t i = 0; i < step_.size(); ++i)
+        keep[i] = step_[i] % stride_ == 0;
+    forEachColumn([&](auto& column) {
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < column.size(); ++i)
+            if (keep[i])
+                column[kept++] = column[i];
+        column.resize(kept);
+    });
+}
+
+std::vector<double> impactRate(const MotionTrack& track, double window)
+{
+    // rate_i = (N_i - N_j) / (t_i - t_j), N the impacts since the start and j the latest
+    // sample at or before t_i - window (the first sample while the run is younger).
+    const std::vector<double>& t = track.t();
+    const std::vector<long long>& n = track.impacts();
+    std::vector<double> rate(t.size(), 0.0);
+    std::size_t from = 0;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        while (from + 1 < i && t[from + 1] <= t[i] - window)
+            ++from;
+        const double span = t[i] - t[from];
+        rate[i] = span > 0.0 ? static_cast<double>(n[i] - n[from]) / span : 0.0;
     }
-    step_.resize(kept);
-    t_.resize(kept);
-    for (int a = 0; a < 3; ++a) {
-        p_[a].resize(kept);
-        v_[a].resize(kept);
-    }
-    energy_.resize(kept);
+    if (rate.size() > 1)
+        rate[0] = rate[1]; // no interval ends at the start: show the first one's rate
+    return rate;
 }
 
 void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball)
@@ -84,20 +105,26 @@ void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int b
         out << "," << names[a];
     for (int a : shown)
         out << ",v" << names[a];
-    out << ",energy_per_mass\n";
+    out << ",energy_total,energy_kinetic,energy_potential,energy_spring,momentum_x,momentum_y,momentum_z,moving,"
+           "impacts\n";
     char number[32];
-    auto put = [&](double x) {
-        std::snprintf(number, sizeof number, "%.17g", x);
-        out << "," << number;
-    };
+    // Shortest round-trip form, independent of the locale (std::to_chars never reads it).
+    auto text = [&](auto x) { return std::string_view(number, std::to_chars(number, number + sizeof number, x).ptr); };
+    auto put = [&](auto x) { out << "," << text(x); };
     for (std::size_t i = 0; i < track.size(); ++i) {
-        std::snprintf(number, sizeof number, "%.17g", track.t()[i]);
-        out << number << "," << ball;
+        out << text(track.t()[i]) << "," << ball;
         for (int a : shown)
             put(track.p(a)[i]);
         for (int a : shown)
             put(track.v(a)[i]);
         put(track.energy()[i]);
+        put(track.kinetic()[i]);
+        put(track.potential()[i]);
+        put(track.spring()[i]);
+        for (int a = 0; a < 3; ++a)
+            put(track.momentum(a)[i]);
+        put(static_cast<long long>(track.moving()[i]));
+        put(track.impacts()[i]);
         out << "\n";
     }
 }

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// One ball's motion and the scene's energy, sample by sample, as the charts draw them.
+// One ball's motion and what the whole scene conserves (energy in parts, momentum, moving
+// balls, impacts: core/diagnostics/conservation.h), sample by sample, as the charts draw them.
 // Memory stays bounded: past `capacity` samples every other sample is dropped and later
 // steps are kept at twice the stride, so a long run is thinned evenly, never cut short.
 #pragma once
+
+#include "core/diagnostics/conservation.h"
 
 #include <Eigen/Core>
 
@@ -20,7 +23,8 @@ public:
     void clear();
     // Offers the sample of step `step` (0 for the start); kept when the step falls on the
     // current stride. Steps must come in increasing order.
-    void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, double energy);
+    void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+             const ConservationSample& scene);
 
     // Drops every sample of step `step` and later (a run forked back to that step).
     void truncateFrom(long long step);
@@ -34,21 +38,39 @@ public:
     const std::vector<double>& t() const { return t_; }
     const std::vector<double>& p(int axis) const { return p_[static_cast<std::size_t>(axis)]; }
     const std::vector<double>& v(int axis) const { return v_[static_cast<std::size_t>(axis)]; }
+    // Of all balls: kinetic, potential, spring and total energy; momentum per axis.
+    const std::vector<double>& kinetic() const { return kinetic_; }
+    const std::vector<double>& potential() const { return potential_; }
+    const std::vector<double>& spring() const { return spring_; }
     const std::vector<double>& energy() const { return energy_; }
+    const std::vector<double>& momentum(int axis) const { return momentum_[static_cast<std::size_t>(axis)]; }
+    const std::vector<double>& moving() const { return moving_; }
+    const std::vector<long long>& impacts() const { return impacts_; } // since the start
 
 private:
     void thin();
+    template <typename F> void forEachColumn(F&& f);
 
     std::size_t capacity_;
     long long stride_ = 1;
     std::vector<long long> step_;
     std::vector<double> t_;
-    std::array<std::vector<double>, 3> p_, v_;
-    std::vector<double> energy_;
+    std::array<std::vector<double>, 3> p_, v_, momentum_;
+    std::vector<double> kinetic_, potential_, spring_, energy_, moving_;
+    std::vector<long long> impacts_;
 };
 
+// Impacts per unit of time at every kept sample: the impacts counted over the window
+// (t - window, t], divided by the time that window spans (shorter at the start). A
+// count, not a derivative, so it is exact for any stride: impacts(i) - impacts(j) over
+// t(i) - t(j).
+std::vector<double> impactRate(const MotionTrack& track, double window);
+
 // The track as CSV, every kept sample at full precision: `t,ball,` then the position and
-// velocity of the axes shown (`axes` 1: y alone; 3: x, y, z), then `energy_per_mass`.
+// velocity of the axes shown (`axes` 1: y alone; 3: x, y, z), then `energy_total`,
+// `energy_kinetic`, `energy_potential`, `energy_spring` (of all balls, per unit mass or
+// with the physical model's masses), `momentum_x`, `_y`, `_z`, `moving` (balls) and
+// `impacts` (since the start).
 // `ball` is the index the trajectory CSV uses (0 for the first ball).
 void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball);
 

@@ -71,12 +71,4 @@ SceneLayout layoutFor(const RunSpec& spec)
     throw std::logic_error("scene without a layout");
 }
 
-double energyPerMass(const State& s, const SceneLayout& layout)
-{
-    // E/m = |v|^2 / 2 + g h per ball (eqs 2.1-2.2 conserve it in flight).
-    const double kinetic = 0.5 * s.v.colwise().squaredNorm().sum();
-    const double potential = layout.gravity * (s.p.row(1).array() - layout.floorY).sum();
-    return kinetic + potential;
-}
-
 } // namespace ab::ui

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Where a scene's balls live, read from its parameters: the region the view frames, the
 // floor, the walls, gravity and the radius a ball is drawn with. Shared by the window's
-// 3D view and the charts' energy, so both agree on the floor the height is measured from.
+// 3D view and the recording; the charts' energy comes from core/diagnostics/conservation.h,
+// which measures height from the same floor.
 #pragma once
 
 #include "core/simulation.h"
@@ -21,9 +22,5 @@ struct SceneLayout {
 };
 
 SceneLayout layoutFor(const RunSpec& spec);
-
-// Kinetic plus potential energy per unit mass, summed over the balls (the report's balls
-// have equal masses): sum of |v|^2 / 2 + g (y - floor), in length^2/time^2. Finite states only.
-double energyPerMass(const State& s, const SceneLayout& layout);
 
 } // namespace ab::ui

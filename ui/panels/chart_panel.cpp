@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -46,16 +47,25 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
         auto* view = new QChartView(chart);
         view->setObjectName(QStringLiteral("chart-%1").arg(QString::fromLatin1(chartKey(kind).data())));
         view->setRenderHint(QPainter::Antialiasing);
-        view->setMinimumHeight(150);
+        view->setMinimumHeight(200); // title, legend and a readable plot (five charts need the scroll area)
         view->installEventFilter(this);
         view->viewport()->installEventFilter(this);
         charts_[slot(kind)] = chart;
         views_[slot(kind)] = view;
         splitter->addWidget(view);
     }
-    chart(ChartKind::Energy)->legend()->hide(); // one line, named by the title
-    splitter->setSizes({300, 300, 200});
-    layout->addWidget(splitter, 1);
+    applies_.fill(true);
+    wanted_.fill(true);
+    splitter->setSizes({300, 300, 260, 220, 220});
+    // Up to five charts: when the window is too short for all of them at a readable
+    // height they scroll, rather than shrink until their labels are cut.
+    auto* scroll = new QScrollArea;
+    scroll->setObjectName("chartScroll");
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(splitter);
+    layout->addWidget(scroll, 1);
 
     connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
         if (!updating_)
@@ -63,7 +73,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     });
 }
 
-void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double tEnd)
+void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double tEnd, const ChartUnits& units)
 {
     updating_ = true;
     ball_->setRange(1, std::max(balls, 1));
@@ -71,10 +81,28 @@ void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double t
     ball_->setEnabled(balls > 1);
     updating_ = false;
     ballCount_->setText(tr("of %1").arg(balls));
-    for (MotionChart* c : charts_) {
-        c->configure(scene, ball);
-        c->setTimeSpan(tEnd);
+    for (ChartKind kind : allChartKinds()) {
+        const std::size_t i = slot(kind);
+        if (applies_[i])
+            wanted_[i] = !views_[i]->isHidden(); // the wish, as the View menu or a preset left it
+        applies_[i] = chartApplies(kind, scene.id);
+        views_[i]->setHidden(!(wanted_[i] && applies_[i]));
+        charts_[i]->configure(scene, ball, units);
+        charts_[i]->setTimeSpan(tEnd);
     }
+}
+
+void ChartPanel::setChartShown(ChartKind kind, bool on)
+{
+    const std::size_t i = slot(kind);
+    wanted_[i] = on;
+    views_[i]->setHidden(!(on && applies_[i]));
+}
+
+bool ChartPanel::chartShown(ChartKind kind) const
+{
+    const std::size_t i = slot(kind);
+    return applies_[i] ? !views_[i]->isHidden() : wanted_[i];
 }
 
 void ChartPanel::showTrack(const MotionTrack& track)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The live charts, stacked: position, velocity and energy against time for the selected
-// ball, a ball chooser, and a context menu on each chart to export it (PNG, SVG) or the
-// data behind all of them (CSV). The chart last clicked or hovered is the "current" one
-// that Ctrl+E exports.
+// The live charts, stacked: position and velocity against time for the selected ball,
+// energy, momentum and activity of the whole scene (each only where it applies), a ball chooser, and a context menu on
+// each chart to export it (PNG, SVG) or the data behind all of them (CSV). The chart last clicked or hovered is the
+// "current" one that Ctrl+E exports.
 #pragma once
 
 #include "ui/charts/motion_chart.h"
@@ -25,7 +25,11 @@ public:
     explicit ChartPanel(QWidget* parent = nullptr);
 
     // A new run of `scene` with `balls` balls, following ball `ball`, planned to `tEnd`.
-    void configure(const SceneInfo& scene, int balls, int ball, double tEnd);
+    void configure(const SceneInfo& scene, int balls, int ball, double tEnd, const ChartUnits& units = {});
+    // The View menu's wish: shown when on and the chart applies to the scene; a chart
+    // that does not apply keeps the wish for the next scene it does.
+    void setChartShown(ChartKind kind, bool on);
+    bool chartShown(ChartKind kind) const;
     void showTrack(const MotionTrack& track);
     void setCursorTime(std::optional<double> t);
     // The seam for closed forms (core/reference/): drawn dashed; nullptr removes it.
@@ -43,8 +47,11 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    std::array<MotionChart*, 3> charts_{};
-    std::array<QChartView*, 3> views_{};
+    static constexpr std::size_t kinds = 5;
+    std::array<MotionChart*, kinds> charts_{};
+    std::array<QChartView*, kinds> views_{};
+    std::array<bool, kinds> applies_{};
+    std::array<bool, kinds> wanted_{};
     QSpinBox* ball_;
     QLabel* ballCount_;
     ChartKind current_ = ChartKind::Position;

@@ -41,8 +41,8 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     energy_ = label("statusEnergy", 190);
     step_->setToolTip(tr("Wall time of one simulation step"));
     fps_->setToolTip(tr("Frames drawn per second by the 3D view"));
-    energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, summed over the balls, "
-                           "with the height measured from the floor"));
+    energy_->setToolTip(tr("Kinetic plus potential energy, summed over the balls, with the height measured "
+                           "from the floor: per unit mass in the report model, with the masses in the physical one"));
 }
 
 void StatusReadout::setUnits(const QString& time, const QString& length)
@@ -56,9 +56,13 @@ void StatusReadout::show(const EngineStatus& s)
     time_->setText(tr("t = %1 %2").arg(QString::number(s.t, 'f', s.t < 100 ? 2 : 1), timeUnit_));
     step_->setText(tr("step %1").arg(formatDuration(s.stepSeconds)));
     const QString sq = QString::fromUtf8("\u00b2");
-    energy_->setText(std::isfinite(s.energy)
-                         ? tr("E/m = %1 %2%3/%4%3").arg(QString::number(s.energy, 'g', 5), lengthUnit_, sq, timeUnit_)
-                         : tr("E/m = -"));
+    const QString value = QString::number(s.energy, 'g', 5);
+    if (!s.energyPerUnitMass) // the physical model's masses are in kg
+        energy_->setText(std::isfinite(s.energy) ? tr("E = %1 kg %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
+                                                 : tr("E = -"));
+    else
+        energy_->setText(std::isfinite(s.energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
+                                                 : tr("E/m = -"));
     // The most serious first: a run that stopped, a failure the health check found (the
     // run paused on it), the model's own notice, then a warning of the health check.
     const QString health = QString::fromStdString(s.healthLine);

@@ -54,7 +54,7 @@ void showCharts(ChartPanel& panel, const std::vector<ChartKind>& shown)
 {
     for (ChartKind kind : allChartKinds()) {
         const bool on = shown.empty() || std::find(shown.begin(), shown.end(), kind) != shown.end();
-        panel.chartView(kind)->setHidden(!on); // a preset without charts shows them all
+        panel.setChartShown(kind, on); // a preset without charts shows them all
     }
 }
 
@@ -80,6 +80,10 @@ QString chartName(ChartKind kind)
         return PresetActions::tr("Velocity");
     case ChartKind::Energy:
         return PresetActions::tr("Energy");
+    case ChartKind::Momentum:
+        return PresetActions::tr("Momentum (two or more balls)");
+    case ChartKind::Activity:
+        return PresetActions::tr("Moving balls and impacts (many balls)");
     }
     return QString::fromLatin1(chartKey(kind).data()); // a chart added later, by its key
 }
@@ -117,7 +121,7 @@ Preset capturePreset(MainWindow& window, const std::string& name, const std::str
         if (!spec.params.isDefault(i)) // a preset lists only what differs from the report
             p.params.emplace_back(spec.params.table()[i].key, spec.params.raw(i));
     for (ChartKind kind : allChartKinds())
-        if (!window.charts()->chartView(kind)->isHidden())
+        if (window.charts()->chartShown(kind))
             p.view.charts.emplace_back(chartKey(kind));
     p.view.selectedBall = run.selectedBall();
     if (const BallView* view = window.view()) {
@@ -185,8 +189,7 @@ void PresetActions::addChartToggles(QMenu* view)
         QAction* action = chartToggles_->addAction(chartName(kind));
         action->setCheckable(true);
         action->setChecked(true);
-        connect(action, &QAction::toggled, this,
-                [this, kind](bool on) { window_->charts()->chartView(kind)->setHidden(!on); });
+        connect(action, &QAction::toggled, this, [this, kind](bool on) { window_->charts()->setChartShown(kind, on); });
     }
 }
 
@@ -197,7 +200,7 @@ void PresetActions::syncChartToggles()
     const auto actions = chartToggles_->actions();
     for (std::size_t i = 0; i < allChartKinds().size() && i < std::size_t(actions.size()); ++i) {
         const QSignalBlocker block(actions[qsizetype(i)]);
-        actions[qsizetype(i)]->setChecked(!window_->charts()->chartView(allChartKinds()[i])->isHidden());
+        actions[qsizetype(i)]->setChecked(window_->charts()->chartShown(allChartKinds()[i]));
     }
 }
 

@@ -5,12 +5,12 @@
 
 namespace ab::ui {
 
-Frame makeFrame(long long step, const State& s, double energy)
+Frame makeFrame(long long step, const State& s, const ConservationSample& scene)
 {
     Frame f;
     f.step = step;
     f.t = s.t;
-    f.energy = energy;
+    f.scene = scene;
     const auto n = static_cast<std::size_t>(s.size());
     f.p.resize(3 * n);
     f.v.resize(3 * n);
@@ -23,9 +23,17 @@ Frame makeFrame(long long step, const State& s, double energy)
     return f;
 }
 
-Recording::Recording(const SceneLayout& layout, int trackedBall, std::size_t frameBudgetBytes,
-                     std::size_t trackCapacity)
-    : layout_(layout), trackedBall_(trackedBall), track_(trackCapacity)
+Frame makeFrame(long long step, const State& s, const ConservationMeter& meter)
+{
+    // The meter reads the state's rows (structure of arrays) in one streaming pass; the
+    // float conversion below reads it ball by ball. Kept apart so that the meter stays in
+    // the core, where the CLI and the tests use it without frames.
+    return makeFrame(step, s, meter.measure(s));
+}
+
+Recording::Recording(const SceneLayout& layout, const ConservationMeter& meter, int trackedBall,
+                     std::size_t frameBudgetBytes, std::size_t trackCapacity)
+    : layout_(layout), meter_(meter), trackedBall_(trackedBall), track_(trackCapacity)
 {
     // A frame holds 6 floats per ball.
     const std::size_t frameBytes = 6 * sizeof(float) * static_cast<std::size_t>(std::max(layout.balls, 1));
@@ -35,11 +43,11 @@ Recording::Recording(const SceneLayout& layout, int trackedBall, std::size_t fra
 void Recording::add(long long step, const State& s)
 {
     const Eigen::Index b = trackedBall_;
-    const double energy = energyPerMass(s, layout_);
-    track_.add(step, s.t, s.p.col(b), s.v.col(b), energy);
+    const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
+    track_.add(step, s.t, s.p.col(b), s.v.col(b), scene);
     if (step % frameStride_ != 0)
         return;
-    frames_.push_back(makeFrame(step, s, energy));
+    frames_.push_back(makeFrame(step, s, scene));
     while (frames_.size() > maxFrames_)
         thinFrames();
 }
@@ -69,7 +77,7 @@ void Recording::setTrackedBall(int ball)
         const auto i = static_cast<std::size_t>(3 * ball);
         const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);
         const Eigen::Vector3d v(f.v[i], f.v[i + 1], f.v[i + 2]);
-        track_.add(f.step, f.t, p, v, f.energy);
+        track_.add(f.step, f.t, p, v, f.scene);
     }
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // What the window keeps of a run, to draw the charts and to scrub back through it: the
-// tracked ball's motion and the energy at every step (MotionTrack, thinned past its
+// tracked ball's motion and what the scene conserves at every step (MotionTrack, thinned past its
 // capacity), and frames of every ball at a stride that doubles whenever the frames
 // would pass a byte budget. Memory stays bounded for any run length and ball count;
 // with few balls every step is a frame.
@@ -22,19 +22,22 @@ struct Frame {
     double t = 0.0;
     std::vector<float> p;
     std::vector<float> v;
-    double energy = 0.0; // of all balls, per unit mass
+    ConservationSample scene; // of all balls: energy, momentum, moving balls, impacts
 
     int balls() const { return static_cast<int>(p.size() / 3); }
 };
 
-Frame makeFrame(long long step, const State& s, double energy);
+// The frame of `s` and, in the same pass over the balls, what `meter` measures of it.
+Frame makeFrame(long long step, const State& s, const ConservationMeter& meter);
+// The frame of `s` with `scene` measured already.
+Frame makeFrame(long long step, const State& s, const ConservationSample& scene);
 
 class Recording {
 public:
     static constexpr std::size_t defaultFrameBudget = std::size_t(192) << 20;
 
-    Recording(const SceneLayout& layout, int trackedBall, std::size_t frameBudgetBytes = defaultFrameBudget,
-              std::size_t trackCapacity = std::size_t(1) << 20);
+    Recording(const SceneLayout& layout, const ConservationMeter& meter, int trackedBall,
+              std::size_t frameBudgetBytes = defaultFrameBudget, std::size_t trackCapacity = std::size_t(1) << 20);
 
     // Adds final state `s` of step `step`; steps come in increasing order.
     void add(long long step, const State& s);
@@ -61,6 +64,7 @@ private:
     void thinFrames();
 
     SceneLayout layout_;
+    ConservationMeter meter_;
     int trackedBall_;
     std::size_t maxFrames_;
     long long frameStride_ = 1;

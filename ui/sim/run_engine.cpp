@@ -37,17 +37,18 @@ void lowerThisThreadsPriority()
 
 RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget,
                      std::size_t keyframeBudget)
-    : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())),
-      recording_(layout_, trackedBall, frameBudget), state_(sim_->start())
+    : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())), meter_(*sim_),
+      recording_(layout_, meter_, trackedBall, frameBudget), state_(sim_->start())
 {
     health_.emplace(*sim_, state_);
     // A keyframe holds two 3-vectors of doubles and a counter per ball.
     const std::size_t keyframeBytes =
         (6 * sizeof(double) + sizeof(int)) * static_cast<std::size_t>(std::max(state_.size(), 1));
     maxKeyframes_ = std::max<std::size_t>(keyframeBudget / keyframeBytes, 2); // the start is always kept
-    current_ = makeFrame(0, state_, energyPerMass(state_, layout_));
+    current_ = makeFrame(0, state_, meter_);
     status_.t = state_.t;
-    status_.energy = current_.energy;
+    status_.energy = current_.scene.energy.total();
+    status_.energyPerUnitMass = meter_.perUnitMass();
     status_.finished = maxSteps_ <= 0;
     if (!finiteState(state_))
         finish("the start state holds a non-finite number");
@@ -224,9 +225,9 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
     havePrevious_ = true;
     ++status_.steps;
     status_.stepSeconds = status_.stepSeconds == 0.0 ? seconds : 0.9 * status_.stepSeconds + 0.1 * seconds;
-    current_ = makeFrame(status_.steps, state_, energyPerMass(state_, layout_));
+    current_ = makeFrame(status_.steps, state_, meter_);
     status_.t = state_.t;
-    status_.energy = current_.energy;
+    status_.energy = current_.scene.energy.total();
     if (newFailure && status_.playing) {
         status_.playing = false; // stop where the failure showed: the state just recorded
         status_.pausedOnHealth = true;
@@ -323,9 +324,9 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     const diagnostics::HealthStatus worst = health_->worst();
     status_.health = worst.level;
     status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
-    current_ = makeFrame(target, state_, energyPerMass(state_, layout_));
+    current_ = makeFrame(target, state_, meter_);
     status_.t = state_.t;
-    status_.energy = current_.energy;
+    status_.energy = current_.scene.energy.total();
     anchorTime_ = Clock::now();
     anchorStep_ = target;
     ++status_.version;

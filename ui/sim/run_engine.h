@@ -45,7 +45,8 @@ struct EngineStatus {
     bool playing = false;
     bool finished = false;                                // the planned steps are done, or the run failed
     double stepSeconds = 0.0;                             // wall time of one step, smoothed
-    double energy = 0.0;                                  // of the current state, per unit mass
+    double energy = 0.0;                                  // total of the current state (ConservationMeter)
+    bool energyPerUnitMass = true;                        // false: with the physical model's masses
     std::string warning;                                  // from the run's health check, empty when none
     std::string notice;                                   // from the model, e.g. the report's bounce limit reached
     diagnostics::Health health = diagnostics::Health::Ok; // the health check's worst finding so far
@@ -102,6 +103,7 @@ private:
     std::unique_ptr<Simulation> sim_;
     const long long maxSteps_;
     const SceneLayout layout_;
+    const ConservationMeter meter_;
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// What a run conserves, or fails to: the energy of a state split into kinetic, potential
+// and spring parts, the total momentum per axis, and how many balls move. One function
+// for any simulation, so the window's charts, `amazeballs-cli chart` and the tests read
+// the same numbers.
+//
+//  1. Masses: the physical model's own (`m`, or `m1`, `m2`: its World); energies are then
+//     in mass length^2/time^2 and momenta in mass length/time. The report model and
+//     many-balls have equal masses: unit mass, so the values are per unit mass.
+//  2. Potential energy is m g (y - floor): the floor is y = 0 (stages 1-3) or the box's
+//     bottom face y = -L/2 (stage 4), as the 3D view draws it.
+//  3. Impacts are counted by the models in State::impacts (many-balls, both models).
+#pragma once
+
+#include "../physical/spring_contact.h"
+#include "../physical/world.h"
+#include "../simulation.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <vector>
+
+namespace ab {
+
+struct EnergyParts {
+    double kinetic = 0.0;   // sum of 1/2 m |v|^2
+    double potential = 0.0; // sum of m g (y - floor)
+    double spring = 0.0;    // stored in the spring floor (bounce1d, physical, contact 1 or 2); else 0
+    double total() const { return kinetic + potential + spring; }
+};
+
+struct ConservationSample {
+    EnergyParts energy;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero(); // sum of m v, per axis
+    long long moving = 0;                               // balls faster than movingSpeed()
+    long long impacts = 0;                              // State::impacts: impacts since the start
+};
+
+class ConservationMeter {
+public:
+    explicit ConservationMeter(const Simulation& sim);
+
+    // One pass over the balls (O(N), no allocation): energy, momentum, moving balls.
+    ConservationSample measure(const State& s) const;
+
+    bool perUnitMass() const { return mass_.empty(); }
+    bool hasSpring() const { return spring_.has_value(); }
+    double floor() const { return floor_; }
+    // A ball slower than this counts as at rest (see the .cpp for why this value).
+    double movingSpeed() const { return movingSpeed_; }
+
+private:
+    ConservationSample measureWorld(const State& s) const;
+    ConservationSample measureEqualMasses(const State& s) const;
+
+    std::vector<double> mass_; // empty: unit masses
+    double g_ = 0.0;
+    double floor_ = 0.0;
+    double movingSpeed_ = 0.0;
+    std::optional<physical::SpringFloor> spring_;
+    const physical::World* world_ = nullptr; // the physical model's, when the simulation has one (not owned)
+};
+
+// The meter built for `sim`, applied to `s` (convenient for one state; a run builds the
+// meter once).
+ConservationSample measureConservation(const Simulation& sim, const State& s);
+
+} // namespace ab
