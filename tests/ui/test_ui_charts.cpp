@@ -284,6 +284,30 @@ private slots:
         QVERIFY(chart.referenceLine(1)->points().isEmpty());
     }
 
+    void aNewSceneForgetsThePreviousClosedFormAndItsRange()
+    {
+        // Stage 1's fall from 2000 stretched the value axis; stage 2's ball stays below
+        // 300, so once the chart is configured for it the axis must end near 300, not 2000.
+        ab::ui::ReferenceMotion fall{
+            "closed form", [](double t) -> std::optional<ab::ui::Kinematics> {
+                return ab::ui::Kinematics{Eigen::Vector3d(0, 2000 - 4.91 * t * t, 0), Eigen::Vector3d(0, -9.82 * t, 0)};
+            }};
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Position);
+        chart.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
+        chart.setTimeSpan(20.0);
+        chart.setReference(&fall, 100);
+        chart.configure(ab::sceneInfo(ab::SceneId::Box3d), 0);
+        QVERIFY(!chart.hasReference());
+        ab::ui::ReferenceMotion inBox{
+            "closed form", [](double t) -> std::optional<ab::ui::Kinematics> {
+                return ab::ui::Kinematics{Eigen::Vector3d(2 + 5 * t, 20, 2 + 5 * t), Eigen::Vector3d(5, 0, 5)};
+            }};
+        chart.setReference(&inBox, 100);
+        auto* axis = qobject_cast<QValueAxis*>(chart.axes(Qt::Vertical).front());
+        QVERIFY(axis);
+        QVERIFY2(axis->max() >= 52.0 && axis->max() < 300.0, qPrintable(QString::number(axis->max())));
+    }
+
     void cursorMarksTheShownTime()
     {
         ab::ui::MotionChart chart(ab::ui::ChartKind::Position);

@@ -240,6 +240,9 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     }
     haveRange_ = false;
     rateHi_ = 0.0;
+    // A closed form belongs to the run it was made for: the caller sets the new run's
+    // (setReference) after this, and the old one must not stretch the new value axis.
+    reference_.reset();
     setNiceRange(valueAxis_, 0.0, 1.0, 6);
     if (rateAxis_)
         setNiceRange(rateAxis_, 0.0, 1.0, 6);

@@ -58,7 +58,8 @@ public:
     explicit MotionChart(ChartKind kind);
 
     ChartKind kind() const { return kind_; }
-    // Axes, titles and units for `scene`, ball `ball` (0-based); clears the lines.
+    // Axes, titles and units for `scene`, ball `ball` (0-based); clears the lines and the
+    // closed form (set the new run's with setReference).
     void configure(const SceneInfo& scene, int ball, const ChartUnits& units = {});
     // The time axis spans [0, tEnd] (the planned run), growing if the run goes past it.
     void setTimeSpan(double tEnd);
