@@ -289,6 +289,15 @@ struct HealthCheck::Impl {
                     return "ball went " + length(where.depth) + " into the floor spring" + at() +
                            ", twice deeper than its energy allows (fell through the floor)";
                 });
+            else if (where.depth > 0.5 * springAllowance * 1.01)
+                // Over 1% deeper than the start's energy can compress the spring: the
+                // method's error, beyond the truncation error of a step that resolves the
+                // contact (the spring floor's backstop stops it at 1.5 times that depth).
+                raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice) {
+                    what = "ball went " + length(where.depth) + " into the floor spring" + at() +
+                           ", deeper than its energy allows (" + length(0.5 * springAllowance) + ")";
+                    advice = methodAdvice();
+                });
             return;
         }
         // One step's travel, and for the report's stage 4 the push of one radius.

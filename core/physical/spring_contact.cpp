@@ -404,9 +404,18 @@ SpringFloor springFloorFor(const RunSpec& spec)
 
 namespace {
 
+constexpr double kBackstopFactor = 1.5;
+
 class SpringBounce1d final : public Simulation {
 public:
-    SpringBounce1d(const RunSpec& spec, double dt, const SpringFloor& floor) : Simulation(spec, dt), floor_(floor) {}
+    SpringBounce1d(const RunSpec& spec, double dt, const SpringFloor& floor) : Simulation(spec, dt), floor_(floor)
+    {
+        // The backstop (design note 4 in the header): 1.5 times the deepest compression
+        // the start's energy per unit mass, 1/2 v^2 + potential(y), allows.
+        const State s = start();
+        const double e0 = 0.5 * s.v(1, 0) * s.v(1, 0) + floor_.potential(s.p(1, 0));
+        backstop_ = kBackstopFactor * maxCompression(floor_, e0);
+    }
 
     State initialState() const override
     {
@@ -422,9 +431,13 @@ public:
         next = s;
         next.t = s.t + dt_;
         const PointState before{s.p(1, 0), s.v(1, 0)};
-        const PointState after = spec_.impacts == ImpactMode::Located
-                                     ? springStepLocated(spec_.integrator, floor_, before, dt_)
-                                     : springStep(spec_.integrator, floor_, before, dt_);
+        PointState after = spec_.impacts == ImpactMode::Located
+                               ? springStepLocated(spec_.integrator, floor_, before, dt_)
+                               : springStep(spec_.integrator, floor_, before, dt_);
+        if (backstop_ > 0.0 && after.y < -backstop_) {
+            after.y = -backstop_;             // stopped at the backstop: no further into the floor
+            after.v = std::max(after.v, 0.0); // its speed into the floor taken away (energy only removed)
+        }
         if (!floor_.inContact(s.p(1, 0)) && floor_.inContact(after.y))
             ++next.count; // a new contact with the floor
         next.p(1, 0) = after.y;
@@ -433,6 +446,7 @@ public:
 
 private:
     SpringFloor floor_;
+    double backstop_ = 0.0; // depth below y = 0 (length)
 };
 
 } // namespace

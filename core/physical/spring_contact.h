@@ -12,6 +12,14 @@
 //     contact duration t_c or a stiffness given directly (closed forms in the .cpp).
 //  3. The integrators step (y, v) of one ball; the implicit ones solve their stage
 //     equation exactly for the linear spring and by safeguarded Newton for Hertz.
+//  4. A backstop under the spring: no solution of the ODE compresses the spring deeper
+//     than maxCompression of the start's energy (with e <= 1 the energy never rises),
+//     so a ball stepped below 1.5 times that depth is the integrator's failure, beyond
+//     its stability limit. The simulation stops such a ball at the backstop (position
+//     clamped, its velocity into the floor removed: energy only taken away) rather than
+//     let it fall through the floor; the method's failure still shows, as the energy
+//     it gained and the depth reached, which the health check reports with their figures.
+//     The stability limits are measured on springStep itself, without a backstop.
 #pragma once
 
 #include "../simulation.h"

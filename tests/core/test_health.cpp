@@ -190,6 +190,30 @@ private slots:
         QVERIFY(c.health->worst().advice.find("explicit Euler gains energy") != std::string::npos);
     }
 
+    void aSpringStepBeyondItsLimitIsStoppedAtTheBackstopNotThroughTheFloor()
+    {
+        // Linear spring k_s = 1e3 (omega0 = 31.6), undamped, no gravity, in at speed 1:
+        // the exact motion reaches d = u / omega0 = 0.0316 at most. Verlet at dt omega0 =
+        // 2.5 (limit 2) stepped blindly across the contact grows without bound; the
+        // backstop holds it at 1.5 d, and the run fails on the energy it gained instead.
+        RunSpec s = testing::spec(SceneId::Bounce1d, {"contact=1", "stiffness=1000", "k=1", "g=0", "h0=0.5", "v0=-1"},
+                                  ModelKind::Physical);
+        s.integrator = Integrator::Verlet;
+        s.impacts = ab::ImpactMode::StepEnd;
+        s.dt = 2.5 / std::sqrt(1000.0);
+        const double d = 1.0 / std::sqrt(1000.0);
+        auto sim = ab::makeSimulation(s);
+        double deepest = 0.0;
+        ab::runRecorded(*sim, sim->start(), 2000, 1,
+                        [&](const ab::State& st) { deepest = std::min(deepest, st.p(1, 0)); });
+        QVERIFY2(std::abs(deepest + 1.5 * d) <= 1e-12, qPrintable(QString::number(deepest)));
+        const Checked c = runChecked(s, 2000);
+        QCOMPARE(c.health->figures().escaped, 0);
+        QCOMPARE(c.health->worst().level, Health::Failed);
+        QVERIFY(c.health->figures().maxEnergyGain > 0.1);
+        QVERIFY(mentions(*c.health, "deeper than its energy allows"));
+    }
+
     void startAtRestIsMeasuredAgainstTheSceneSize()
     {
         // No energy at the start: a gain of 1/2 (speed 1) against g x 1 (the scale of a

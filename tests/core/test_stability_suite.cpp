@@ -64,6 +64,10 @@ private slots:
                 QVERIFY2(r.figures.steps > 0, qPrintable(where));
                 // A failure always says what happened.
                 QVERIFY2(r.verdict == "ok" || !r.note.empty(), qPrintable(where));
+                // The physical model never loses a ball: impacts are located or the walls
+                // clamp, and the spring floor's backstop holds an unstable integrator.
+                if (r.model == "physical")
+                    QVERIFY2(r.figures.escaped == 0, qPrintable(where + " " + QString::fromStdString(r.note)));
                 break;
             case RowOutcome::Refused:
                 QVERIFY2(r.verdict == "ok", qPrintable(where + " " + QString::fromStdString(r.note)));
