@@ -38,6 +38,7 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 enum class Kind {
     NonFinite,
     Escaped,
+    Backstop,
     Penetration,
     Energy,
     Overlap,
@@ -289,10 +290,19 @@ struct HealthCheck::Impl {
                     return "ball went " + length(where.depth) + " into the floor spring" + at() +
                            ", twice deeper than its energy allows (fell through the floor)";
                 });
+            else if (where.depth >= 0.5 * springAllowance * physical::kBackstopFactor * (1.0 - 1e-9))
+                // Held by the spring floor's backstop: no solution of the ODE gets there,
+                // so the integrator is unstable at this step.
+                raise(Kind::Backstop, Health::Failed, [&](std::string& what, std::string& advice) {
+                    what = "ball reached the floor spring's backstop, " + length(where.depth) + " deep" + at() +
+                           ", 1.5 times deeper than its energy allows (" + length(0.5 * springAllowance) +
+                           "): the step is beyond the method's stability, and the backstop held the ball";
+                    advice = methodAdvice();
+                });
             else if (where.depth > 0.5 * springAllowance * 1.01)
                 // Over 1% deeper than the start's energy can compress the spring: the
                 // method's error, beyond the truncation error of a step that resolves the
-                // contact (the spring floor's backstop stops it at 1.5 times that depth).
+                // contact.
                 raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice) {
                     what = "ball went " + length(where.depth) + " into the floor spring" + at() +
                            ", deeper than its energy allows (" + length(0.5 * springAllowance) + ")";

@@ -8,8 +8,9 @@
 //  1. non-finite positions or velocities, or an energy that overflows (failed);
 //  2. a centre beyond the floor or a wall: within one step's travel it is an impact found
 //     late (warning), deeper it has left the box (failed); on the spring floor the
-//     allowance is twice the compression the start energy allows (failed; over 1% beyond
-//     that compression, a warning);
+//     allowance is twice the compression the start energy allows (failed; at the spring's
+//     backstop, 1.5 times it, failed too: the integrator is unstable; over 1% beyond it, a
+//     warning);
 //  3. energy (kinetic + g times the height above the floor, + the spring's) above its
 //     start: k and e are at most 1, so any gain is the method's (warning above 1e-6 of the
 //     start, failed above 10%; a start with less energy than a ball raised by the scene's

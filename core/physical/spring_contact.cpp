@@ -404,8 +404,6 @@ SpringFloor springFloorFor(const RunSpec& spec)
 
 namespace {
 
-constexpr double kBackstopFactor = 1.5;
-
 class SpringBounce1d final : public Simulation {
 public:
     SpringBounce1d(const RunSpec& spec, double dt, const SpringFloor& floor) : Simulation(spec, dt), floor_(floor)

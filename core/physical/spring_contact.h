@@ -73,6 +73,9 @@ HertzDamping hertzDampingForRestitution(double e);
 SpringFloor hertzFloorFromContactTime(double e, double contactTime, double impactSpeed, double g);
 SpringFloor hertzFloorFromStiffness(double e, double stiffness, double g);
 
+// The backstop's depth in units of maxCompression of the start's energy (design note 4).
+inline constexpr double kBackstopFactor = 1.5;
+
 // Deepest compression a ball reaching the floor with energy `energy` per unit mass (above
 // y = 0) can have, without damping: the allowance beyond which it has "fallen through".
 double maxCompression(const SpringFloor& floor, double energy);

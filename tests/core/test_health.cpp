@@ -211,7 +211,7 @@ private slots:
         QCOMPARE(c.health->figures().escaped, 0);
         QCOMPARE(c.health->worst().level, Health::Failed);
         QVERIFY(c.health->figures().maxEnergyGain > 0.1);
-        QVERIFY(mentions(*c.health, "deeper than its energy allows"));
+        QVERIFY(mentions(*c.health, "backstop held the ball"));
     }
 
     void startAtRestIsMeasuredAgainstTheSceneSize()
