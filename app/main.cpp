@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // amazeballs: the window.
 // `amazeballs [FILE.json] [--preset NAME|FILE] [--scene KEY] [--set NAME=VALUE]... [--speed X]
-//  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]`.
+//  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]
+//  [--compare MODEL[:INTEGRATOR[:IMPACTS]]]`.
 #include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/presets/preset_actions.h"
@@ -54,8 +55,9 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
     auto* samples = new std::vector<std::pair<double, double>>;
     ab::ui::BallView* view = window.view();
     if (!view) {
-        std::fprintf(stderr, "amazeballs: %s\n",
-                     qPrintable(QApplication::translate("main", "--measure-frames needs the 3D view (an OpenGL platform)")));
+        std::fprintf(
+            stderr, "amazeballs: %s\n",
+            qPrintable(QApplication::translate("main", "--measure-frames needs the 3D view (an OpenGL platform)")));
         QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
         return;
     }
@@ -88,6 +90,39 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
         delete samples;
         QCoreApplication::quit();
     });
+}
+
+} // namespace
+
+namespace {
+
+// --compare MODEL[:INTEGRATOR[:IMPACTS]], each part a core key.
+ab::RunVariant parseCompare(const QString& text)
+{
+    const QStringList parts = text.split(':');
+    auto fail = [&](const QString& why) {
+        throw ab::InputError(QStringLiteral("--compare: %1").arg(why).toStdString());
+    };
+    if (parts.size() > 3)
+        fail(QApplication::translate("main", "'%1' has more than MODEL:INTEGRATOR:IMPACTS").arg(text));
+    ab::RunVariant v;
+    const auto model = ab::parseModel(parts[0].toStdString());
+    if (!model)
+        fail(QApplication::translate("main", "unknown model '%1'").arg(parts[0]));
+    v.model = *model;
+    if (parts.size() > 1) {
+        const auto integrator = ab::parseIntegrator(parts[1].toStdString());
+        if (!integrator)
+            fail(QApplication::translate("main", "unknown integrator '%1'").arg(parts[1]));
+        v.integrator = *integrator;
+    }
+    if (parts.size() > 2) {
+        const auto impacts = ab::parseImpactMode(parts[2].toStdString());
+        if (!impacts)
+            fail(QApplication::translate("main", "unknown impact mode '%1'").arg(parts[2]));
+        v.impacts = *impacts;
+    }
+    return v;
 }
 
 } // namespace
@@ -127,12 +162,18 @@ int main(int argc, char** argv)
         "fresh", QApplication::translate("main", "Start as on a first start: neither read nor write the remembered "
                                                  "window, stage and settings."));
     const QCommandLineOption lectureOption(
-        "lecture", QApplication::translate("main", "Open in lecture mode: full screen, large text, the step-by-step walk."));
+        "lecture",
+        QApplication::translate("main", "Open in lecture mode: full screen, large text, the step-by-step walk."));
+    const QCommandLineOption compareOption(
+        "compare",
+        QApplication::translate("main", "Run the stage again beside the first, computed by MODEL (report or "
+                                        "physical), INTEGRATOR and IMPACTS (located or step-end)."),
+        "MODEL[:INTEGRATOR[:IMPACTS]]");
     const QCommandLineOption themeOption(
         "theme", QApplication::translate("main", "Colours: light, dark, high-contrast-light or high-contrast-dark."),
         "KEY");
-    parser.addOptions({sceneOption, setOption, playOption, speedOption, measureOption, presetOption, freshOption,
-                       lectureOption, themeOption});
+    parser.addOptions({compareOption, sceneOption, setOption, playOption, speedOption, measureOption, presetOption,
+                       freshOption, lectureOption, themeOption});
     parser.addPositionalArgument("FILE.json", QApplication::translate("main", "A preset file to open."), "[FILE.json]");
     parser.process(app);
 
@@ -186,6 +227,14 @@ int main(int argc, char** argv)
                 throw ab::InputError(
                     QApplication::translate("main", "--set: the values were refused (see the window's status bar)")
                         .toStdString());
+        }
+        if (parser.isSet(compareOption)) {
+            ab::ui::RunOptions options = window.options();
+            options.compare = parseCompare(parser.value(compareOption));
+            if (!window.applyOptions(options))
+                throw ab::InputError(QApplication::translate("main", "--compare: refused: %1")
+                                         .arg(window.runOptions()->errorText())
+                                         .toStdString());
         }
         if (parser.isSet(speedOption)) {
             const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");

@@ -14,6 +14,28 @@ double defaultDt(SceneId scene, ModelKind model)
     return sceneInfo(scene).reportDt;
 }
 
+RunSpec variantOf(const RunSpec& base, const RunVariant& variant)
+{
+    RunSpec spec = base;
+    spec.model = variant.model;
+    spec.integrator = variant.integrator;
+    spec.impacts = variant.impacts;
+    spec.dt = variant.dt ? variant.dt : base.dt;
+    return spec;
+}
+
+std::string variantLabel(const RunVariant& variant)
+{
+    std::string label(modelKey(variant.model));
+    if (variant.model == ModelKind::Report)
+        return label; // one scheme per stage: the integrator and impacts do not apply
+    label += " ";
+    label += integratorKey(variant.integrator);
+    if (variant.impacts == ImpactMode::StepEnd && variant.integrator != Integrator::Event)
+        label += " step-end";
+    return label;
+}
+
 long long defaultSteps(SceneId scene, ModelKind model)
 {
     (void)model;

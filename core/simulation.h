@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace ab {
 
@@ -26,6 +27,25 @@ struct RunSpec {
     ParamValues params;
     std::optional<State> init; // start here instead of the parameters' start values
 };
+
+// Another way to compute the same scene: a model, an integrator and impact finding, and
+// optionally its own step. A comparison run is `variantOf` the main run: the same scene,
+// constants and start, computed this way.
+struct RunVariant {
+    ModelKind model = ModelKind::Report;
+    Integrator integrator = Integrator::SymplecticEuler;
+    ImpactMode impacts = ImpactMode::Located;
+    std::optional<double> dt; // unset: the main run's step
+
+    friend bool operator==(const RunVariant&, const RunVariant&) = default;
+};
+
+// `base` computed as `variant` says; scene, parameters, start state, broadphase and
+// threads stay `base`'s. Not validated: makeSimulation does that.
+RunSpec variantOf(const RunSpec& base, const RunVariant& variant);
+// A few words naming the variant: "report", "physical symplectic-euler", "physical
+// rk4 step-end" (impacts are named only when found at the step's end; `event` has none).
+std::string variantLabel(const RunVariant& variant);
 
 class Simulation {
 public:
@@ -65,7 +85,6 @@ long long defaultSteps(SceneId scene, ModelKind model);
 // state. `cancelled`, when given, is polled between steps; a cancelled run returns the
 // state reached so far.
 State runRecorded(Simulation& sim, State start, long long steps, long long every,
-                  const std::function<void(const State&)>& record,
-                  const std::function<bool()>& cancelled = {});
+                  const std::function<void(const State&)>& record, const std::function<bool()>& cancelled = {});
 
 } // namespace ab

@@ -69,17 +69,18 @@ private:
 
 } // namespace
 
-void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path, const ExportProgress& progress)
+void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path, const ExportProgress& progress,
+                   const MotionTrack* compare)
 {
     writeFileAtomically(path.toStdString(), [&](std::ostream& out) {
         if (!progress) {
-            writeMotionCsv(out, track, axes, ball);
+            writeMotionCsv(out, track, axes, ball, compare);
             return;
         }
         LineCounter counter(out.rdbuf(), track.size() + 1, progress); // the header and one line a sample
         std::ostream counted(&counter);
         counted.exceptions(std::ios::badbit);
-        writeMotionCsv(counted, track, axes, ball);
+        writeMotionCsv(counted, track, axes, ball, compare);
         counted.flush();
         if (!progress(track.size() + 1, track.size() + 1))
             throw ExportCancelled();

@@ -26,9 +26,9 @@ struct ExportCancelled : std::runtime_error {
 // Told (rows written, rows in all) every few thousand rows; returns false to cancel.
 using ExportProgress = std::function<bool(std::size_t done, std::size_t total)>;
 
-// Writes the track as CSV (writeMotionCsv); throws InputError, or ExportCancelled when
-// `progress` says stop (the file is then not written).
+// Writes the track (and a comparison run's, prefixed `compare_`) as CSV (writeMotionCsv);
+// throws InputError, or ExportCancelled when `progress` says stop (nothing is written).
 void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path,
-                   const ExportProgress& progress = {});
+                   const ExportProgress& progress = {}, const MotionTrack* compare = nullptr);
 
 } // namespace ab::ui

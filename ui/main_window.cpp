@@ -39,6 +39,11 @@ QString qs(const std::string& s)
 
 constexpr int maxTracePoints = 20000;
 
+QString labelOf(const RunSpec& spec)
+{
+    return qs(variantLabel(RunVariant{spec.model, spec.integrator, spec.impacts, spec.dt}));
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
@@ -241,7 +246,7 @@ MainWindow::Setup& MainWindow::setupFor(SceneId scene)
 std::optional<QString> MainWindow::startRun(const Setup& setup)
 {
     try {
-        controller_.setRun(setup.spec, setup.options.steps);
+        controller_.setRun(setup.spec, setup.options.steps, setup.options.compare);
     } catch (const InputError& e) {
         const QString message = QString::fromUtf8(e.what());
         showError(message);
@@ -323,12 +328,18 @@ void MainWindow::runReplaced()
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
     readout_->setUnits(coreText(info.timeUnit), coreText(info.lengthUnit));
+    // The comparison's lines are named after both runs; without one the names stay plain.
+    const QString compareLabel =
+        controller_.comparing() ? labelOf(controller_.comparisonEngine()->simulation().spec()) : QString();
+    charts_->setComparison(labelOf(spec), compareLabel);
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
         framedScene_ = scene_;
         view_->setSelected(ball);
+        view_->setGhosts({}, compareLabel.isEmpty() ? QString()
+                                                    : tr("solid: %1, ghost: %2").arg(labelOf(spec), compareLabel));
     }
     transport_->goLive();
     panelClock_.invalidate();
@@ -366,7 +377,9 @@ void MainWindow::showReference()
         }
     }
     const int ball = controller_.selectedBall();
-    if (!reference_ || ball >= reference_->balls()) {
+    // Beside a comparison run the closed form would be a third line per axis, dashed like
+    // the comparison's dotted one: the legend could no longer be read, so it gives way.
+    if (!reference_ || ball >= reference_->balls() || controller_.comparing()) {
         charts_->setReference(nullptr);
         return;
     }
@@ -421,6 +434,16 @@ void MainWindow::refresh()
             charts_->showTrack(rec.track());
         start = rec.frames().empty() ? current.t : rec.frames().front().t;
     });
+    if (const RunEngine* compare = controller_.comparisonEngine()) {
+        compare->read([&](const Recording& rec, const Frame& current) {
+            if (view_) { // the comparison at the moment shown: it never runs ahead of the main run
+                const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
+                view_->setGhosts((shown ? shown : &current)->p, view_->ghostLegend());
+            }
+            if (panelsDue)
+                charts_->showComparisonTrack(rec.track());
+        });
+    }
     if (!panelsDue)
         return;
     panelClock_.restart();
@@ -483,10 +506,14 @@ void MainWindow::exportDataTo(const QString& path)
     const int axes = controller_.layout().axes;
     const int ball = controller_.selectedBall();
     MotionTrack copy;
+    std::optional<MotionTrack> compare;
     controller_.engine().read([&](const Recording& rec, const Frame&) { copy = rec.track(); });
+    if (const RunEngine* other = controller_.comparisonEngine())
+        other->read([&](const Recording& rec, const Frame&) { compare = rec.track(); });
     // A long run's CSV takes seconds: written on a worker, with progress and Cancel.
-    runWithProgress(this, tr("Writing %1").arg(QFileInfo(path).fileName()),
-                    [&](const ProgressFn& progress) { saveMotionCsv(copy, axes, ball, path, progress); });
+    runWithProgress(this, tr("Writing %1").arg(QFileInfo(path).fileName()), [&](const ProgressFn& progress) {
+        saveMotionCsv(copy, axes, ball, path, progress, compare ? &*compare : nullptr);
+    });
 }
 
 void MainWindow::exportViewTo(const QString& path)

@@ -44,6 +44,8 @@ public:
     // core refuses them, and then nothing changes.
     bool applyValues(const ParamValues& values);
     bool applyOptions(const RunOptions& options);
+    // The current stage's applied options (a comparison included).
+    RunOptions options() { return setupFor(scene_).options; }
     // Shows `spec`'s stage with these options as its remembered setup (a preset). Returns
     // the core's refusal (also shown), and then nothing changes.
     std::optional<QString> showSetup(const RunSpec& spec, const RunOptions& options);

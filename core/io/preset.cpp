@@ -19,12 +19,15 @@
 //     "view": {                                        what the app shows (optional, all parts)
 //       "camera": {"yaw": 30, "pitch": 20, "distance": 600, "target": [150, 100, 150]},
 //       "charts": ["position", "velocity"],
-//       "selected_ball": 0
+//       "selected_ball": 0,
+//       "compare": {"model": "physical", "integrator": "rk4", "impacts": "located", "dt": 0.5}
 //     }
 //   }
 //
 // Yaw and pitch are in degrees (pitch within [-90, 90]), distance and target in the
-// scene's length unit. A preset is a whole setup: applying it resets what it leaves out
+// scene's length unit. `view.compare` runs the same scene again beside the first: its
+// model is required; integrator and impacts default to symplectic-euler and located, and
+// its dt (optional) to the main run's step. A preset is a whole setup: applying it resets what it leaves out
 // (integrator, impacts, step, parameters) to the defaults. Every error names the file and
 // the field path ("preset foo.json: params.k: ..."); reading never builds a simulation.
 #include "preset.h"
@@ -214,7 +217,7 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Value& v, 
 
 PresetView readView(const Value& v, const Where& at)
 {
-    checkObject(v, at, {"camera", "charts", "selected_ball"});
+    checkObject(v, at, {"camera", "charts", "selected_ball", "compare"});
     PresetView view;
     if (const Value* camera = v.find("camera")) {
         const Where c = at / "camera";
@@ -235,6 +238,19 @@ PresetView readView(const Value& v, const Where& at)
     }
     if (const Value* ball = v.find("selected_ball"))
         view.selectedBall = static_cast<int>(whole(*ball, at / "selected_ball", 0, 1e9));
+    if (const Value* compare = v.find("compare")) {
+        const Where c = at / "compare";
+        checkObject(*compare, c, {"model", "integrator", "impacts", "dt"});
+        RunVariant variant;
+        variant.model = key<ModelKind>(required(*compare, "model", c), c / "model", parseModel, "report, physical");
+        if (const Value* x = compare->find("integrator"))
+            variant.integrator = key<Integrator>(*x, c / "integrator", parseIntegrator, integratorChoices());
+        if (const Value* x = compare->find("impacts"))
+            variant.impacts = key<ImpactMode>(*x, c / "impacts", parseImpactMode, "located, step-end");
+        if (const Value* x = compare->find("dt"))
+            variant.dt = number(*x, c / "dt");
+        view.compare = variant;
+    }
     return view;
 }
 
@@ -277,6 +293,8 @@ void checkView(const PresetView& view, const Where& at, long long ballCount)
         (at / "selected_ball")
             .fail(std::to_string(*view.selectedBall) + " is not a ball of this scene (balls 0 to " +
                   std::to_string(ballCount - 1) + ")");
+    if (view.compare && view.compare->dt && !(*view.compare->dt > 0.0 && std::isfinite(*view.compare->dt)))
+        (at / "compare" / "dt").fail(shown(*view.compare->dt) + " must be a positive step");
 }
 
 // Checks every value of the preset; returns the scene's parameters with the preset's set.
@@ -345,6 +363,15 @@ Value viewValue(const PresetView& view)
     }
     if (view.selectedBall)
         out.add("selected_ball", Value::makeNumber(*view.selectedBall));
+    if (view.compare) {
+        Value compare = Value::makeObject();
+        compare.add("model", Value::makeString(std::string(modelKey(view.compare->model))))
+            .add("integrator", Value::makeString(std::string(integratorKey(view.compare->integrator))))
+            .add("impacts", Value::makeString(std::string(impactModeKey(view.compare->impacts))));
+        if (view.compare->dt)
+            compare.add("dt", Value::makeNumber(*view.compare->dt));
+        out.add("compare", std::move(compare));
+    }
     return out;
 }
 

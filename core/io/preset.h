@@ -25,6 +25,9 @@ struct PresetView {
     std::optional<Eigen::Vector3d> cameraTarget;
     std::vector<std::string> charts; // chart keys, e.g. "position", "velocity", "energy"
     std::optional<int> selectedBall;
+    // A second run of the same scene and start, computed another way, drawn beside the
+    // first (ghosted in the 3D view, dashed on the charts); unset: no comparison.
+    std::optional<RunVariant> compare;
 
     friend bool operator==(const PresetView&, const PresetView&) = default;
 };

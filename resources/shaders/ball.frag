@@ -13,6 +13,7 @@ flat in vec4 ballColour;
 
 uniform vec2 depthTerms; // projection (2,2) and (2,3): clip z = a z + b, clip w = -z
 uniform vec3 lightDir;   // view space, unit, towards the light
+uniform int ghost;       // 1: a comparison run's ball, pale, see-through, outlined
 
 out vec4 fragColour;
 
@@ -43,6 +44,17 @@ void main()
     s *= s;
     s *= s;
     float specular = s * s * s;
-    fragColour = vec4(ballColour.rgb * (0.42 + 0.68 * diffuse) + vec3(0.35 * specular), 1.0);
+    vec3 lit = ballColour.rgb * (0.42 + 0.68 * diffuse) + vec3(0.35 * specular);
+    if (ghost == 1) {
+        // Washed towards white and see-through, with a dark outline: |n.d| is the cosine
+        // between the normal and the ray, 1 at the centre of the disc and 0 at its edge,
+        // so rim = 1 - |n.d| grows from 0 to 1 towards the outline.
+        float rim = 1.0 - abs(dot(n, d));
+        float edge = smoothstep(0.55, 0.8, rim);
+        vec3 pale = mix(lit, vec3(1.0), 0.6);
+        fragColour = vec4(mix(pale, 0.35 * ballColour.rgb, edge), mix(0.45, 0.95, edge));
+    } else {
+        fragColour = vec4(lit, 1.0);
+    }
     gl_FragDepth = depthOf(hit.z);
 }

@@ -391,6 +391,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Went back to t = %1 %2: the run goes on from there, and what came after is dropped</source>
         <translation>Tillbaka till t = %1 %2: körningen fortsätter därifrån, och det som kom efter kastas</translation>
     </message>
+    <message>
+        <source>solid: %1, ghost: %2</source>
+        <translation>hel: %1, spöke: %2</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::MotionChart</name>
@@ -425,10 +429,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>t (%1)</source>
         <translation>t (%1)</translation>
-    </message>
-    <message>
-        <source> (closed form)</source>
-        <translation> (sluten form)</translation>
     </message>
     <message>
         <source>Energy per unit mass, all balls (%1)</source>
@@ -485,6 +485,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>impacts per %1</source>
         <translation>stötar per %1</translation>
+    </message>
+    <message>
+        <source>closed form</source>
+        <translation>sluten form</translation>
     </message>
 </context>
 <context>
@@ -654,6 +658,34 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Not applied: %1</source>
         <translation>Inte tillämpat: %1</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>av</translation>
+    </message>
+    <message>
+        <source>Compare with</source>
+        <translation>Jämför med</translation>
+    </message>
+    <message>
+        <source>Where the comparison run finds impacts</source>
+        <translation>Var jämförelsekörningen hittar stötar</translation>
+    </message>
+    <message>
+        <source>Its impacts</source>
+        <translation>Dess stötar</translation>
+    </message>
+    <message>
+        <source>Runs the same stage again beside this run, from the same start and with the same constants, computed another way: ghosted in the 3D view, dotted on the charts.</source>
+        <translation>Kör samma etapp en gång till bredvid den här körningen, från samma start och med samma konstanter, beräknad på ett annat sätt: som spöke i 3D-vyn, prickad i diagrammen.</translation>
+    </message>
+    <message>
+        <source>The report model ignores the physical-only constants (%1). When this run is the report&apos;s, a physical comparison reads them as this stage holds them: their defaults unless they were set while the physical model was chosen.</source>
+        <translation>Rapportmodellen bortser från konstanterna som bara den fysikaliska modellen har (%1). När den här körningen är rapportens läser en fysikalisk jämförelse dem som etappen har dem: deras standardvärden, om de inte ändrades medan den fysikaliska modellen var vald.</translation>
+    </message>
+    <message>
+        <source>The physical model ignores the report-only constants (%1).</source>
+        <translation>Den fysikaliska modellen bortser från konstanterna som bara rapportmodellen har (%1).</translation>
     </message>
 </context>
 <context>
@@ -1898,6 +1930,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule</source>
         <translation>läroboksfysik för stela bollar: impulser som bevarar rörelsemängden, en fysikalisk viloregel</translation>
     </message>
+    <message>
+        <source>Stage 1 twice: the report&apos;s rules beside textbook physics</source>
+        <translation>Etapp 1 två gånger: rapportens regler bredvid läroboksfysik</translation>
+    </message>
+    <message>
+        <source>The report&apos;s stage 1 (solid ball, full lines) beside the physical model with symplectic Euler and impacts located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The energy chart shows where the two part.</source>
+        <translation>Rapportens etapp 1 (hel boll, heldragna linjer) bredvid den fysikaliska modellen med symplektisk Euler och stötar lokaliserade inom steget (spökboll, prickade linjer): samma start, samma konstanter, samma steg 1. Rapporten hittar varje studs först i slutet av ett steg och stoppar bollen efter 10 studsar; den fysikaliska modellen löser varje stöttid inom steget och låter bollen komma till vila enligt sin egen viloregel. Energidiagrammet visar var de två skiljs åt.</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1976,6 +2016,30 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>--scene: a preset names its own stage; give one or the other</source>
         <translation>--scene: en förinställning anger sin egen etapp; ange det ena eller det andra</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has more than MODEL:INTEGRATOR:IMPACTS</source>
+        <translation>&apos;%1&apos; har mer än MODEL:INTEGRATOR:IMPACTS</translation>
+    </message>
+    <message>
+        <source>unknown model &apos;%1&apos;</source>
+        <translation>okänd modell &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown integrator &apos;%1&apos;</source>
+        <translation>okänd integrator &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown impact mode &apos;%1&apos;</source>
+        <translation>okänt stötläge &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Run the stage again beside the first, computed by MODEL (report or physical), INTEGRATOR and IMPACTS (located or step-end).</source>
+        <translation>Kör etappen en gång till bredvid den första, beräknad med MODEL (report eller physical), INTEGRATOR och IMPACTS (located eller step-end).</translation>
+    </message>
+    <message>
+        <source>--compare: refused: %1</source>
+        <translation>--compare: avvisades: %1</translation>
     </message>
 </context>
 </TS>

@@ -108,6 +108,7 @@ ab::Preset awkwardPreset()
     p.view.cameraTarget = Eigen::Vector3d(1.0 / 3.0, -2.5e-310, 2e15 + 2);
     p.view.charts = {"energy", "momentum-x"};
     p.view.selectedBall = 1;
+    p.view.compare = ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::StepEnd, 1.0 / 7.0};
     return p;
 }
 
@@ -365,6 +366,41 @@ private slots:
             << doc("box3d", R"(, "view": {"charts": [1]})") << "view.charts[0]: expected a string, found a number";
         QTest::newRow("chart twice") << doc("box3d", R"(, "view": {"charts": ["velocity", "velocity"]})")
                                      << "view.charts[1]: 'velocity' is listed twice";
+        QTest::newRow("compare without a model")
+            << doc("box3d", R"(, "view": {"compare": {"integrator": "rk4"}})") << "view.compare: missing field 'model'";
+        QTest::newRow("compare with an unknown model")
+            << doc("box3d", R"(, "view": {"compare": {"model": "magic"}})")
+            << "view.compare.model: unknown value 'magic' (choose report, physical)";
+        QTest::newRow("compare with an unknown integrator")
+            << doc("box3d", R"(, "view": {"compare": {"model": "physical", "integrator": "leapfrog"}})")
+            << "view.compare.integrator: unknown value 'leapfrog'";
+        QTest::newRow("compare with an unknown key")
+            << doc("box3d", R"(, "view": {"compare": {"model": "physical", "colour": "red"}})")
+            << "view.compare.colour: unknown key";
+        QTest::newRow("compare with a negative step")
+            << doc("box3d", R"(, "view": {"compare": {"model": "physical", "dt": -1}})")
+            << "view.compare.dt: -1 must be a positive step";
+        QTest::newRow("compare as a string")
+            << doc("box3d", R"(, "view": {"compare": "physical"})") << "view.compare: expected an object";
+    }
+
+    void compareChoiceRoundTripsExactlyAndAnOldPresetHasNone()
+    {
+        ab::Preset p = builtin("bounce1d-report");
+        QVERIFY(!p.view.compare); // written before comparisons existed: still loads, with none
+        for (const ab::RunVariant& v :
+             {ab::RunVariant{ab::ModelKind::Report, ab::Integrator::SymplecticEuler, ab::ImpactMode::Located, {}},
+              ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::Event, ab::ImpactMode::StepEnd, 0.1 + 0.2}}) {
+            p.view.compare = v;
+            const ab::Preset back = ab::parsePreset(ab::presetToJson(p), "text");
+            QVERIFY(back == p);
+            QVERIFY(back.view.compare == v);
+        }
+        const ab::Preset& shipped = builtin("bounce1d-compare-report-physical");
+        QCOMPARE(shipped.model, ab::ModelKind::Report);
+        QVERIFY(shipped.view.compare);
+        QCOMPARE(shipped.view.compare->model, ab::ModelKind::Physical);
+        QCOMPARE(shipped.view.compare->integrator, ab::Integrator::SymplecticEuler);
     }
 
     void badPresetFileIsRefusedNamingTheFieldAndChangesNothing()

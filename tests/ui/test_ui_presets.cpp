@@ -79,7 +79,8 @@ private slots:
         // A setup far from the defaults: stage 2, physical model, RK4, own step and run
         // length, two constants changed, one chart hidden.
         w.showScene(SceneId::Box3d);
-        ab::ui::RunOptions options{ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::StepEnd, 0.005, 1234};
+        ab::ui::RunOptions options{
+            ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::StepEnd, 0.005, 1234, {}};
         QVERIFY(w.applyOptions(options));
         ab::ParamValues values = w.controller().spec().params;
         values.parse("k", "0.75");
@@ -310,7 +311,8 @@ private slots:
         QCOMPARE(late.p(0, 0), 300.0);
         QVERIFY(std::abs(late.v(0, 0) - -k * 240.0) < 1e-9);
 
-        ab::ui::RunOptions options{ab::ModelKind::Physical, ab::Integrator::Euler, ab::ImpactMode::Located, 0.25, 400};
+        ab::ui::RunOptions options{
+            ab::ModelKind::Physical, ab::Integrator::Euler, ab::ImpactMode::Located, 0.25, 400, {}};
         QVERIFY(w.applyOptions(options));
         const auto inside = runOf(w, 1.5);
         const ab::State& located = at(inside, 1.25);

@@ -2,7 +2,8 @@
 // The 3D view in a real X server (Xvfb, Mesa llvmpipe): the framebuffer shows each ball
 // in its colour where the simulation puts it, projected with the view's own camera
 // matrices, and the image is not blank; a click selects the ball under it; with keyboard
-// focus the arrow keys move the camera as the report's program does. Skipped where the
+// focus the arrow keys move the camera as the report's program does; a comparison run's
+// balls are drawn ghosted beside the solid ones. Skipped where the
 // platform has no OpenGL windows (offscreen, minimal).
 #include "ui/main_window.h"
 #include "ui/view/ball_view.h"
@@ -120,6 +121,40 @@ private slots:
         QPointF own;
         QVERIFY(view->ballPixel(0, own));
         QVERIFY((own - projectWithCamera(*view, ballCentre(w, 0))).manhattanLength() < 1.0);
+    }
+
+    void aComparisonRunsBallIsDrawnGhostedBesideTheSolidOne()
+    {
+        MainWindow& w = open(SceneId::Bounce1d);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(view);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        ab::ui::RunOptions o = w.options();
+        o.compare = ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::SymplecticEuler, ab::ImpactMode::Located, {}};
+        QVERIFY(w.applyOptions(o));
+        QVERIFY(view->ghostLegend().contains("solid: report"));
+        QVERIFY(view->ghostLegend().contains("ghost: physical symplectic-euler"));
+        for (int i = 0; i < 150; ++i) // falling: about 1100 below the start height of 2000
+            w.controller().stepOnce();
+        QTRY_COMPARE_WITH_TIMEOUT(w.controller().status().steps, 150LL, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(w.controller().comparisonStatus().t, w.controller().status().t, 10000);
+        w.controller().pause(); // redraws the panels and the view now
+        w.controller().poll();
+        waitForFrame(view);
+        const QImage image = view->grabFramebuffer().scaled(view->size());
+        QPointF solid, ghost;
+        QVERIFY(view->ballPixel(0, solid));
+        QVERIFY(view->ghostPixel(0, ghost));
+        QVERIFY((solid - ghost).manhattanLength() > 4.0); // drawn beside the ball, not over it
+        const QColor s = image.pixelColor(solid.toPoint());
+        const QColor g = image.pixelColor(ghost.toPoint());
+        const QColor background = image.pixelColor(4, image.height() / 2);
+        const auto differ = [](const QColor& a, const QColor& b) {
+            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 24;
+        };
+        QVERIFY2(differ(g, background), qPrintable(g.name() + " is the background " + background.name()));
+        QVERIFY2(differ(g, s), qPrintable(g.name() + " is the solid ball's " + s.name()));
+        QVERIFY2(g.saturationF() < s.saturationF(), qPrintable(g.name() + " is not paler than " + s.name()));
     }
 
     void theImageIsNotBlank()

@@ -119,6 +119,11 @@ MotionChart::MotionChart(ChartKind kind)
     for (int a = 0; a < 4; ++a) {
         const QColor colour = lineColour(kind, a);
         lines_[a] = add(new QLineSeries, QPen(colour, a == 2 && kind == ChartKind::Energy ? 2.4 : 2.0));
+        // The comparison: the same colour, lighter and dotted, so each line's twin is plain.
+        QPen dotted(colour.lighter(135), 2.0, Qt::DotLine);
+        dotted.setCapStyle(Qt::FlatCap);
+        overlays_[a] = add(new QLineSeries, dotted);
+        setMarkerVisible(this, overlays_[a], false);
         if (a == 3)
             break;
         QPen dashed(colour.darker(130), 1.6, Qt::DashLine);
@@ -130,8 +135,10 @@ MotionChart::MotionChart(ChartKind kind)
         // nothing to do with a number of balls.
         rateAxis_ = new QValueAxis;
         addAxis(rateAxis_, Qt::AlignRight);
-        lines_[1]->detachAxis(valueAxis_);
-        lines_[1]->attachAxis(rateAxis_);
+        for (QLineSeries* s : {lines_[1], overlays_[1]}) {
+            s->detachAxis(valueAxis_);
+            s->attachAxis(rateAxis_);
+        }
         rateAxis_->setLabelFormat("%g");
         rateAxis_->setLinePenColor(activityColours[1]);
         rateAxis_->setLabelsColor(activityColours[1].darker(120));
@@ -230,14 +237,14 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
             names[a] = QString::fromLatin1(axisNames[kind_ == ChartKind::Velocity   ? 1
                                                      : kind_ == ChartKind::Momentum ? 2
                                                                                     : 0][a]);
-        lines_[a]->setName(names[a]);
+        baseNames_[a] = names[a];
         lines_[a]->setVisible(shown);
         setMarkerVisible(this, lines_[a], shown);
-        if (a < 3) {
+        overlays_[a]->clear();
+        if (a < 3)
             references_[a]->clear();
-            references_[a]->setName(lines_[a]->name() + tr(" (closed form)"));
-        }
     }
+    applyNames();
     haveRange_ = false;
     rateHi_ = 0.0;
     // A closed form belongs to the run it was made for: the caller sets the new run's
@@ -291,7 +298,44 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
     throw std::logic_error("chart kind without data");
 }
 
+void MotionChart::applyNames()
+{
+    const bool comparing = !compareName_.isEmpty();
+    for (int a = 0; a < 4; ++a) {
+        const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
+        lines_[a]->setName(comparing ? baseNames_[a] + " (" + mainName_ + ")" : baseNames_[a]);
+        overlays_[a]->setName(baseNames_[a] + " (" + compareName_ + ")");
+        overlays_[a]->setVisible(comparing && shown);
+        setMarkerVisible(this, overlays_[a], comparing && shown);
+        if (!comparing)
+            overlays_[a]->clear();
+        if (a < 3)
+            references_[a]->setName(baseNames_[a] + " (" + (reference_ ? reference_->name : tr("closed form")) + ")");
+    }
+}
+
+void MotionChart::setComparison(const QString& mainName, const QString& compareName)
+{
+    if (mainName == mainName_ && compareName == compareName_)
+        return;
+    mainName_ = mainName;
+    compareName_ = compareName;
+    applyNames();
+}
+
+void MotionChart::showComparisonTrack(const MotionTrack& track, int columns)
+{
+    if (compareName_.isEmpty())
+        return;
+    drawTrack(track, columns, overlays_);
+}
+
 void MotionChart::showTrack(const MotionTrack& track, int columns)
+{
+    drawTrack(track, columns, lines_);
+}
+
+void MotionChart::drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, 4>& series)
 {
     if (!track.empty() && std::isfinite(track.t().back()) && track.t().back() > tEnd_)
         setTimeSpan(track.t().back());
@@ -307,7 +351,7 @@ void MotionChart::showTrack(const MotionTrack& track, int columns)
             else
                 updateValueRange(lo->y(), hi->y());
         }
-        lines_[a]->replace(points); // replace(), not append(): append is quadratic in Qt Charts 6.4
+        series[static_cast<std::size_t>(a)]->replace(points); // replace(), not append(): quadratic in Qt Charts 6.4
     }
     placeCursor();
 }
@@ -384,7 +428,7 @@ void MotionChart::sampleReference()
             }
         }
         if (drawn)
-            references_[a]->setName(lines_[a]->name() + " (" + reference_->name + ")");
+            references_[a]->setName(baseNames_[a] + " (" + reference_->name + ")");
         references_[a]->replace(points);
         setMarkerVisible(this, references_[a], shown);
     }

@@ -5,7 +5,8 @@
 // spring) and total energy, total momentum per axis (scenes of two or more balls), and
 // the number of moving balls with the impacts per unit of time (many-balls). All are
 // downsampled for drawing, with a time cursor, and a dashed closed form beside the
-// position and velocity when one is given.
+// position and velocity when one is given. A comparison run's lines (the same scene
+// computed another way) are overlaid, lighter and dotted, on every chart.
 #pragma once
 
 #include "motion_track.h"
@@ -69,6 +70,12 @@ public:
     // The seam for closed forms: drawn dashed over the time span; nullptr removes it.
     void setReference(const ReferenceMotion* reference, int columns = 600);
     bool hasReference() const { return reference_.has_value(); }
+    // The seam for a comparison run: the legend names both runs ("y (report)", "y
+    // (physical rk4)") and showComparisonTrack draws the second one's lines. An empty
+    // `compareName` removes the overlay.
+    void setComparison(const QString& mainName, const QString& compareName);
+    void showComparisonTrack(const MotionTrack& track, int columns);
+    bool hasComparison() const { return !compareName_.isEmpty(); }
 
     // The lines drawn. Position, velocity: the axes, {1} for a vertical-only scene, {0,
     // 1, 2} otherwise; momentum {0, 1, 2} (x, y, z). Energy: 0 kinetic, 1 potential,
@@ -79,6 +86,7 @@ public:
     QValueAxis* rateAxis() const { return rateAxis_; } // activity only, else nullptr
     QLineSeries* line(int index) const { return lines_[static_cast<std::size_t>(index)]; }
     QLineSeries* referenceLine(int index) const { return references_[static_cast<std::size_t>(index)]; }
+    QLineSeries* comparisonLine(int index) const { return overlays_[static_cast<std::size_t>(index)]; }
     QLineSeries* cursorLine() const { return cursor_; }
 
 private:
@@ -87,6 +95,9 @@ private:
     void updateValueRange(double lo, double hi);
     void updateRateRange(double hi);
     void placeCursor();
+    void applyNames();
+    // The lines of `track` into `series`, widening the axes to hold them.
+    void drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, 4>& series);
     void sampleReference();
     const std::vector<double>& column(const MotionTrack& track, int line);
     double component(const Kinematics& k, int axis) const;
@@ -97,6 +108,9 @@ private:
     QValueAxis* rateAxis_ = nullptr;
     std::array<QLineSeries*, 4> lines_{};
     std::array<QLineSeries*, 3> references_{};
+    std::array<QLineSeries*, 4> overlays_{};
+    std::array<QString, 4> baseNames_;
+    QString mainName_, compareName_;
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
     double tEnd_ = 1.0;

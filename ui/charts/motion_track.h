@@ -71,7 +71,11 @@ std::vector<double> impactRate(const MotionTrack& track, double window);
 // `energy_kinetic`, `energy_potential`, `energy_spring` (of all balls, per unit mass or
 // with the physical model's masses), `momentum_x`, `_y`, `_z`, `moving` (balls) and
 // `impacts` (since the start).
-// `ball` is the index the trajectory CSV uses (0 for the first ball).
-void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball);
+// `ball` is the index the trajectory CSV uses (0 for the first ball). With `compare`
+// (a comparison run's track) every row gains `compare_t` and the same columns prefixed
+// `compare_`, from the comparison's last sample at or before the row's time (the same
+// time when both runs share their step; empty before its first sample).
+void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball,
+                    const MotionTrack* compare = nullptr);
 
 } // namespace ab::ui

@@ -222,6 +222,14 @@ const char* const listed[] = {
         "core", "The report's stage 1 (section 2.2.1, Appendix A, Figure 2.5): a ball dropped from height 2000 with "
                 "gravity 0.0982 per step^2, 2000 steps of dt = 1. Each bounce reverses the velocity and keeps k = 0.6 "
                 "of it (eq 2.3); once more than 10 bounces have happened, the report's counter stops the ball."),
+    QT_TRANSLATE_NOOP("core", "Stage 1 twice: the report's rules beside textbook physics"),
+    QT_TRANSLATE_NOOP(
+        "core",
+        "The report's stage 1 (solid ball, full lines) beside the physical model with symplectic Euler and impacts "
+        "located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. "
+        "The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical "
+        "model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The "
+        "energy chart shows where the two part."),
     QT_TRANSLATE_NOOP("core", "Zeno: infinitely many bounces in a finite time (k = 0.9)"),
     QT_TRANSLATE_NOOP(
         "core",

@@ -123,6 +123,18 @@ void ChartPanel::setReference(const ReferenceMotion* reference)
         c->setReference(reference);
 }
 
+void ChartPanel::setComparison(const QString& mainName, const QString& compareName)
+{
+    for (MotionChart* c : charts_)
+        c->setComparison(mainName, compareName);
+}
+
+void ChartPanel::showComparisonTrack(const MotionTrack& track)
+{
+    for (std::size_t i = 0; i < charts_.size(); ++i)
+        charts_[i]->showComparisonTrack(track, std::max(views_[i]->width(), 200));
+}
+
 MotionChart* ChartPanel::chart(ChartKind kind) const
 {
     return charts_[slot(kind)];

@@ -34,6 +34,10 @@ public:
     void setCursorTime(std::optional<double> t);
     // The seam for closed forms (core/reference/): drawn dashed; nullptr removes it.
     void setReference(const ReferenceMotion* reference);
+    // The seam for a comparison run (MotionChart::setComparison): an empty `compareName`
+    // removes its lines from every chart.
+    void setComparison(const QString& mainName, const QString& compareName);
+    void showComparisonTrack(const MotionTrack& track);
 
     MotionChart* chart(ChartKind kind) const;
     QChartView* chartView(ChartKind kind) const;

@@ -9,6 +9,8 @@
 #include <QLabel>
 #include <QLineEdit>
 
+#include <algorithm>
+
 namespace ab::ui {
 
 namespace {
@@ -25,6 +27,23 @@ void selectData(QComboBox* box, int value)
     const int i = box->findData(value);
     if (i >= 0)
         box->setCurrentIndex(i);
+}
+
+// The compare list's item data: -1 for off, else model * 100 + integrator.
+constexpr int compareOff = -1;
+int compareCode(ModelKind m, Integrator i)
+{
+    return int(m) * 100 + (m == ModelKind::Report ? 0 : int(i));
+}
+
+// The keys of the scene's constants that one model reads and the other does not.
+QStringList onlyUsedBy(const SceneInfo& scene, unsigned model)
+{
+    QStringList keys;
+    for (const ParamSpec& p : scene.params)
+        if (p.models == model)
+            keys << qs(p.key);
+    return keys;
 }
 
 } // namespace
@@ -58,6 +77,29 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
         impacts_->setItemData(impacts_->findData(int(m)), qs(impactModeKey(m)), Qt::ToolTipRole);
     form->addRow(tr("Impacts"), impacts_);
 
+    compare_ = new QComboBox;
+    compare_->setObjectName("compareCombo");
+    compare_->addItem(tr("off"), compareOff);
+    for (ModelKind m : allModels()) {
+        if (m == ModelKind::Report) {
+            compare_->addItem(QStringLiteral("%1: %2").arg(qs(modelKey(m)), coreText(modelTitle(m))),
+                              compareCode(m, Integrator::SymplecticEuler));
+            continue;
+        }
+        for (Integrator i : allIntegrators())
+            compare_->addItem(
+                QStringLiteral("%1, %2 (%3)").arg(qs(modelKey(m)), coreText(integratorTitle(i)), qs(integratorKey(i))),
+                compareCode(m, i));
+    }
+    form->addRow(tr("Compare with"), compare_);
+
+    compareImpacts_ = new QComboBox;
+    compareImpacts_->setObjectName("compareImpactsCombo");
+    compareImpacts_->addItem(tr("located inside the step"), int(ImpactMode::Located));
+    compareImpacts_->addItem(tr("at the step's end (as the report)"), int(ImpactMode::StepEnd));
+    compareImpacts_->setToolTip(tr("Where the comparison run finds impacts"));
+    form->addRow(tr("Its impacts"), compareImpacts_);
+
     dt_ = new QLineEdit;
     dt_->setObjectName("dtField");
     dtUnit_ = new QLabel;
@@ -79,7 +121,7 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
     error_->hide();
     form->addRow(error_);
 
-    for (QComboBox* box : {model_, integrator_, impacts_})
+    for (QComboBox* box : {model_, integrator_, impacts_, compare_, compareImpacts_})
         connect(box, &QComboBox::currentIndexChanged, this, [this] { propose(); });
     for (QLineEdit* field : {dt_, steps_})
         connect(field, &QLineEdit::editingFinished, this, [this] { propose(); });
@@ -93,6 +135,21 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     selectData(model_, int(options.model));
     selectData(integrator_, int(options.integrator));
     selectData(impacts_, int(options.impacts));
+    compare_->setCurrentIndex(std::max(compareIndex(options.compare), 0));
+    selectData(compareImpacts_, int(options.compare ? options.compare->impacts : ImpactMode::Located));
+    // Both runs read this stage's constants, each only the ones its model has.
+    const QStringList physicalOnly = onlyUsedBy(scene, PhysicalModel);
+    const QStringList reportOnly = onlyUsedBy(scene, ReportModel);
+    QString why = tr("Runs the same stage again beside this run, from the same start and with the same constants, "
+                     "computed another way: ghosted in the 3D view, dotted on the charts.");
+    if (!physicalOnly.isEmpty())
+        why += "\n" + tr("The report model ignores the physical-only constants (%1). When this run is the report's, a "
+                         "physical comparison reads them as this stage holds them: their defaults unless they were "
+                         "set while the physical model was chosen.")
+                          .arg(physicalOnly.join(", "));
+    if (!reportOnly.isEmpty())
+        why += "\n" + tr("The physical model ignores the report-only constants (%1).").arg(reportOnly.join(", "));
+    compare_->setToolTip(why);
     dt_->setPlaceholderText(tr("%1 (the model's step)").arg(qs(formatNumber(defaultDt(scene.id, options.model)))));
     dt_->setText(options.dt ? qs(formatNumber(*options.dt)) : QString());
     dtUnit_->setText(coreText(scene.timeUnit));
@@ -110,6 +167,13 @@ void RunOptionsPanel::updateEnabled()
     impacts_->setEnabled(physical);
     integrator_->setToolTip(physical ? tr("How the physical model advances in time") : why);
     impacts_->setToolTip(physical ? tr("Where impacts are found") : why);
+    compareImpacts_->setEnabled(shown_.compare && shown_.compare->model == ModelKind::Physical &&
+                                shown_.compare->integrator != Integrator::Event);
+}
+
+int RunOptionsPanel::compareIndex(const std::optional<RunVariant>& variant) const
+{
+    return compare_->findData(variant ? compareCode(variant->model, variant->integrator) : compareOff);
 }
 
 void RunOptionsPanel::refuse(const QString& message)
@@ -133,6 +197,17 @@ void RunOptionsPanel::propose()
     o.model = ModelKind(model_->currentData().toInt());
     o.integrator = Integrator(integrator_->currentData().toInt());
     o.impacts = ImpactMode(impacts_->currentData().toInt());
+    if (const int code = compare_->currentData().toInt(); code != compareOff) {
+        RunVariant v;
+        v.model = ModelKind(code / 100);
+        v.integrator = v.model == ModelKind::Report ? Integrator::SymplecticEuler : Integrator(code % 100);
+        v.impacts =
+            v.model == ModelKind::Report ? ImpactMode::Located : ImpactMode(compareImpacts_->currentData().toInt());
+        // A step the comparison was given (a preset's) stays while its model stays.
+        if (shown_.compare && shown_.compare->model == v.model)
+            v.dt = shown_.compare->dt;
+        o.compare = v;
+    }
     try {
         const QString dt = dt_->text().trimmed();
         if (!dt.isEmpty()) {
@@ -148,7 +223,7 @@ void RunOptionsPanel::propose()
         return;
     }
     if (o.model == shown_.model && o.integrator == shown_.integrator && o.impacts == shown_.impacts &&
-        o.dt == shown_.dt && o.steps == shown_.steps)
+        o.dt == shown_.dt && o.steps == shown_.steps && o.compare == shown_.compare)
         return;
     emit optionsProposed(o);
 }

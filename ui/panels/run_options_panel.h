@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // How the run is computed: the model, the integrator and impact finding (whatever the
 // core offers; the report model has one scheme per stage, so they apply to the physical
-// model only), the time step and the number of steps.
+// model only), the time step and the number of steps; and a second run to compare with:
+// the same scene, constants and start, computed by another model or integrator.
 #pragma once
 
 #include "core/simulation.h"
@@ -22,6 +23,7 @@ struct RunOptions {
     ImpactMode impacts = ImpactMode::Located;
     std::optional<double> dt; // unset: the model's default
     long long steps = 0;
+    std::optional<RunVariant> compare; // unset: no comparison run
 };
 
 class RunOptionsPanel : public QWidget {
@@ -37,6 +39,10 @@ public:
 
     QComboBox* modelBox() const { return model_; }
     QComboBox* integratorBox() const { return integrator_; }
+    QComboBox* compareBox() const { return compare_; }
+    QComboBox* compareImpactsBox() const { return compareImpacts_; }
+    // The compare list's entry for `variant` (its dt aside); -1 when it has none.
+    int compareIndex(const std::optional<RunVariant>& variant) const;
 
 signals:
     void optionsProposed(const ab::ui::RunOptions& options);
@@ -50,6 +56,8 @@ private:
     QComboBox* model_;
     QComboBox* integrator_;
     QComboBox* impacts_;
+    QComboBox* compare_;
+    QComboBox* compareImpacts_;
     QLineEdit* dt_;
     QLineEdit* steps_;
     QLabel* dtUnit_;

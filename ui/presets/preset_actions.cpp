@@ -124,6 +124,7 @@ Preset capturePreset(MainWindow& window, const std::string& name, const std::str
         if (window.charts()->chartShown(kind))
             p.view.charts.emplace_back(chartKey(kind));
     p.view.selectedBall = run.selectedBall();
+    p.view.compare = run.comparison();
     if (const BallView* view = window.view()) {
         const OrbitCamera& c = view->camera();
         p.view.cameraYaw = c.yaw();
@@ -140,8 +141,12 @@ void applyPresetToWindow(MainWindow& window, const Preset& preset)
     RunSpec spec(preset.scene);
     applyPreset(preset, spec);
     const std::vector<ChartKind> charts = chartsOf(preset);
-    const RunOptions options{spec.model, spec.integrator, spec.impacts, spec.dt,
-                             preset.steps.value_or(defaultSteps(spec.scene, spec.model))};
+    const RunOptions options{spec.model,
+                             spec.integrator,
+                             spec.impacts,
+                             spec.dt,
+                             preset.steps.value_or(defaultSteps(spec.scene, spec.model)),
+                             preset.view.compare};
     if (const auto error = window.showSetup(spec, options))
         throw InputError(presetName(preset) + ": " + error->toStdString());
     showCharts(*window.charts(), charts);

@@ -136,7 +136,12 @@ void WindowShell::setLanguage(Language language)
     installLanguage(language);
     std::unique_ptr<MainWindow> old = std::move(window_);
     const RunSpec spec = old->controller().spec();
-    const RunOptions options{spec.model, spec.integrator, spec.impacts, spec.dt, old->controller().plannedSteps()};
+    const RunOptions options{spec.model,
+                             spec.integrator,
+                             spec.impacts,
+                             spec.dt,
+                             old->controller().plannedSteps(),
+                             old->controller().comparison()};
     window_ = std::make_unique<MainWindow>();
     MainWindow& w = *window_;
     w.showScene(old->scene());

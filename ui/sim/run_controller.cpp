@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace ab::ui {
 
@@ -14,21 +15,46 @@ RunController::RunController(QObject* parent) : QObject(parent)
     frameTimer_.start();
 }
 
+namespace {
+
+// The comparison's simulation, checked against the main run's: the same scene is counted
+// in the same units by both models (SceneInfo::timeUnit and lengthUnit are the scene's,
+// and defaultDt gives both models the report's step: bounce1d counts steps, with g in
+// length per step^2, in the physical model too), so both runs share one time axis when
+// they start at the same time with the same balls.
+std::unique_ptr<Simulation> makeComparison(const RunSpec& main, const Simulation& mainSim, const RunVariant& variant)
+{
+    const std::string who = "compare with " + variantLabel(variant) + ": ";
+    std::unique_ptr<Simulation> sim;
+    try {
+        sim = makeSimulation(variantOf(main, variant));
+    } catch (const InputError& e) {
+        throw InputError(who + e.what());
+    }
+    const State a = mainSim.start(), b = sim->start();
+    if (a.t != b.t || a.size() != b.size())
+        throw InputError(who + "the two runs do not start at the same time with the same balls");
+    return sim;
+}
+
+} // namespace
+
 RunController::~RunController()
 {
-    retireEngine();
+    retireEngine(engine_);
+    retireEngine(compare_);
     for (std::future<void>& f : retiring_)
         f.wait();
 }
 
-void RunController::retireEngine()
+void RunController::retireEngine(std::unique_ptr<RunEngine>& engine)
 {
-    if (!engine_)
+    if (!engine)
         return;
     std::erase_if(retiring_, [](const std::future<void>& f) {
         return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
     });
-    retiring_.push_back(std::async(std::launch::async, [old = std::move(engine_)]() mutable { old.reset(); }));
+    retiring_.push_back(std::async(std::launch::async, [old = std::move(engine)]() mutable { old.reset(); }));
 }
 
 double RunController::realTimeRate(const SceneInfo& scene)
@@ -55,21 +81,37 @@ double RunController::plannedEnd() const
     return sim.start().t + sim.dt() * static_cast<double>(std::max<long long>(steps_, 1));
 }
 
-void RunController::setRun(const RunSpec& spec, long long steps)
+void RunController::setRun(const RunSpec& spec, long long steps, const std::optional<RunVariant>& compare)
 {
     std::unique_ptr<Simulation> sim = makeSimulation(spec); // throws InputError: nothing changes
+    std::unique_ptr<Simulation> other = compare ? makeComparison(spec, *sim, *compare) : nullptr;
     spec_ = std::make_unique<RunSpec>(spec);
+    variant_ = compare;
+    compareSpec_ = other ? std::make_unique<RunSpec>(other->spec()) : nullptr;
     steps_ = steps;
     layout_ = layoutFor(spec);
-    startEngine(std::move(sim));
+    startEngine(std::move(sim), std::move(other));
 }
 
-void RunController::startEngine(std::unique_ptr<Simulation> sim)
+void RunController::startEngine(std::unique_ptr<Simulation> sim, std::unique_ptr<Simulation> compare)
 {
     const bool wasPlaying = status_.playing;
-    retireEngine();
+    retireEngine(engine_);
+    retireEngine(compare_);
     const int balls = sim->start().size();
     selected_ = std::clamp(selected_, 0, std::max(balls - 1, 0));
+    if (compare) {
+        // As many steps as reach the main run's planned end: steps dt / dt_c of them,
+        // rounded up (the allowance keeps 2000 * 1 / 1 from becoming 2001).
+        const double ratio = sim->dt() / compare->dt();
+        const auto compareSteps =
+            static_cast<long long>(std::ceil(static_cast<double>(steps_) * ratio - 1e-9 * std::max(ratio, 1.0)));
+        compare_ = std::make_unique<RunEngine>(std::move(compare), compareSteps, selected_);
+        compareStatus_ = compare_->status();
+    } else {
+        compareStatus_ = {};
+    }
+    compareForkTo_.reset();
     engine_ = std::make_unique<RunEngine>(std::move(sim), steps_, selected_);
     status_ = engine_->status();
     emit runReplaced();
@@ -122,7 +164,8 @@ void RunController::reset()
 {
     if (!spec_)
         return;
-    startEngine(makeSimulation(*spec_)); // the same spec built before: it is valid
+    // The same specs built before: they are valid.
+    startEngine(makeSimulation(*spec_), compareSpec_ ? makeSimulation(*compareSpec_) : nullptr);
 }
 
 void RunController::setSpeed(double factor)
@@ -142,6 +185,8 @@ void RunController::selectBall(int ball)
         return;
     selected_ = ball;
     engine_->setTrackedBall(ball);
+    if (compare_)
+        compare_->setTrackedBall(ball);
     emit selectionChanged(ball);
     poll();
 }
@@ -151,13 +196,41 @@ void RunController::poll()
     if (!engine_)
         return;
     const EngineStatus s = engine_->status();
-    if (s.version == status_.version)
-        return;
+    bool changed = s.version != status_.version;
     const bool playingChange = s.playing != status_.playing;
     status_ = s;
+    if (compare_) {
+        keepComparisonInStep();
+        const EngineStatus c = compare_->status();
+        changed = changed || c.version != compareStatus_.version;
+        compareStatus_ = c;
+    }
+    if (!changed)
+        return;
     if (playingChange)
         emit playingChanged(s.playing);
     emit advanced();
+}
+
+void RunController::keepComparisonInStep()
+{
+    const EngineStatus c = compare_->status();
+    if (compareForkTo_) {
+        if (c.steps != *compareForkTo_)
+            return; // still going back
+        compareForkTo_.reset();
+    }
+    const double dt = compare_->simulation().dt();
+    if (c.t > status_.t + 1e-9 * dt) {
+        // Ahead: the main run went back. The comparison's step k is at t0 + k dt_c, so
+        // the last one not past the main run's time is k = floor((t - t0) / dt_c).
+        const double t0 = compare_->simulation().start().t;
+        const double k = std::floor((status_.t - t0) / dt + 1e-9);
+        compareForkTo_ = std::clamp(static_cast<long long>(k), 0LL, c.steps);
+        compare_->resumeFrom(*compareForkTo_);
+        return;
+    }
+    compare_->follow(status_.t);
 }
 
 } // namespace ab::ui

@@ -3,6 +3,10 @@
 // the spec is refused), plays it at a speed relative to real time, steps, resets, follows
 // the selected ball, and polls the worker each frame, signalling only when something
 // changed. 1x speed is real time in the scene's own units (see realTimeRate()).
+// A comparison run (the same scene, constants and start computed another way: RunVariant)
+// runs on a second engine that follows the main run's simulated time, so both always
+// show the same moment; play, pause, step, reset, speed, going back and the followed
+// ball drive both.
 #pragma once
 
 #include "run_engine.h"
@@ -12,6 +16,7 @@
 
 #include <future>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ab::ui {
@@ -24,9 +29,15 @@ public:
 
     // Validates and builds the run; throws InputError (and keeps the current run) when
     // the core refuses the spec. The new run starts paused at its start state.
-    void setRun(const RunSpec& spec, long long steps);
+    // With `compare`, the comparison run is built too; when the core refuses it the
+    // InputError names the comparison ("compare with report: ...") and nothing changes.
+    void setRun(const RunSpec& spec, long long steps, const std::optional<RunVariant>& compare = std::nullopt);
     bool hasRun() const { return engine_ != nullptr; }
     const RunSpec& spec() const;
+    bool comparing() const { return compare_ != nullptr; }
+    const std::optional<RunVariant>& comparison() const { return variant_; }
+    const RunEngine* comparisonEngine() const { return compare_.get(); }
+    EngineStatus comparisonStatus() const { return compareStatus_; }
     const SceneLayout& layout() const { return layout_; }
     long long plannedSteps() const { return steps_; }
     double plannedEnd() const;
@@ -63,14 +74,22 @@ signals:
     void speedChanged(double factor);
 
 private:
-    void startEngine(std::unique_ptr<Simulation> sim);
+    void startEngine(std::unique_ptr<Simulation> sim, std::unique_ptr<Simulation> compare);
+    // Keeps the comparison at the main run's time: forks it back when it is ahead (the
+    // main run went back), then has it follow.
+    void keepComparisonInStep();
     // Ends the current engine off the GUI thread: its worker may be inside a long step.
-    void retireEngine();
+    void retireEngine(std::unique_ptr<RunEngine>& engine);
 
     std::unique_ptr<RunSpec> spec_;
     long long steps_ = 0;
     SceneLayout layout_;
     std::unique_ptr<RunEngine> engine_;
+    std::optional<RunVariant> variant_;
+    std::unique_ptr<RunSpec> compareSpec_;
+    std::unique_ptr<RunEngine> compare_;
+    EngineStatus compareStatus_;
+    std::optional<long long> compareForkTo_;
     std::vector<std::future<void>> retiring_; // joined at the latest in the destructor
     EngineStatus status_;
     double speed_ = 1.0;

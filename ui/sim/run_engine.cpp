@@ -123,9 +123,35 @@ void RunEngine::resumeFrom(long long step)
         status_.playing = false;
         pendingSteps_ = 0;
         forkTo_ = step;
+        followT_.reset(); // a followed run that goes back is told its new time afterwards
         ++status_.version;
     }
     wake_.notify_all();
+}
+
+void RunEngine::follow(double t)
+{
+    {
+        std::lock_guard lock(mutex_);
+        if (!std::isfinite(t))
+            throw std::logic_error("follow: the time must be finite");
+        if (followT_ == t && !status_.playing)
+            return;
+        status_.playing = false;
+        followT_ = t;
+    }
+    wake_.notify_all();
+}
+
+bool RunEngine::followDue() const
+{
+    if (!followT_)
+        return false;
+    // The next state is at t + dt. Both runs add their steps to the same start time, so
+    // with equal steps their times are equal bit for bit; with different steps a rounding
+    // allowance of 1e-9 of a step keeps t = 3 * 0.1 from missing a followed 0.3.
+    const double dt = sim_->dt();
+    return status_.t + dt <= *followT_ + 1e-9 * dt;
 }
 
 EngineStatus RunEngine::status() const
@@ -142,7 +168,7 @@ void RunEngine::read(const std::function<void(const Recording&, const Frame&)>& 
 
 bool RunEngine::mayStep() const
 {
-    return forkTo_ || (!status_.finished && (status_.playing || pendingSteps_ > 0));
+    return forkTo_ || (!status_.finished && (status_.playing || pendingSteps_ > 0 || followDue()));
 }
 
 void RunEngine::loop()
@@ -160,7 +186,7 @@ void RunEngine::loop()
         }
         if (pendingSteps_ > 0)
             --pendingSteps_;
-        else if (!waitForDueStep(lock))
+        else if (!followDue() && !waitForDueStep(lock)) // a step owed to the followed time is not paced
             continue;
         takeStep(lock);
     }

@@ -20,6 +20,8 @@
 //    doubles whenever they would pass a byte budget, and rebuilds the state of any step
 //    by re-taking the steps from the keyframe before it: the rules are deterministic, so
 //    the forked run is the one a fresh run would have taken to that step, bit for bit.
+// 6. A comparison run follows another instead of the clock (follow): it steps, unpaced,
+//    while its next state's time is not past the other run's, so both show one moment.
 #pragma once
 
 #include "recording.h"
@@ -75,6 +77,9 @@ public:
     // there; the worker rebuilds the state, so this returns at once and status().steps
     // becomes `step` when the fork is done. A later play() or stepOnce() waits for it.
     void resumeFrom(long long step);
+    // Steps, as fast as the steps go, while the next state's time is at most `t` (to
+    // rounding): the run follows another run's time instead of the clock. Pauses.
+    void follow(double t);
 
     EngineStatus status() const;
     // Calls `f` with the recording and the current frame under the lock; keep it short.
@@ -88,6 +93,7 @@ private:
 
     void loop();
     bool mayStep() const;
+    bool followDue() const; // a step is owed to the followed time (under the lock)
     // Waits until a paced step is due; false when woken by a command instead.
     bool waitForDueStep(std::unique_lock<std::mutex>& lock);
     void takeStep(std::unique_lock<std::mutex>& lock);
@@ -113,6 +119,7 @@ private:
     EngineStatus status_;
     int pendingSteps_ = 0;
     std::optional<long long> forkTo_;
+    std::optional<double> followT_;
     double rate_ = 1.0;
     Clock::time_point anchorTime_;
     long long anchorStep_ = 0;

@@ -95,7 +95,7 @@ void BallView::initializeGL()
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &BallView::releaseGl, Qt::UniqueConnection);
     if (!renderer_.initialize(glError_))
         qWarning("3D view: %s", qPrintable(glError_));
-    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = true;
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = ghostsDirty_ = true;
 }
 
 void BallView::releaseGl()
@@ -123,7 +123,8 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
     balls_.clear();
     trace_.clear();
     selected_ = std::min(selected_, std::max(layout.balls - 1, 0));
-    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = true;
+    ghosts_.clear();
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = ghostsDirty_ = true;
     if (reframe || regionChanged)
         resetView();
     update();
@@ -188,6 +189,40 @@ void BallView::setBalls(const std::vector<float>& xyz)
     update();
 }
 
+float BallView::ghostOffset() const
+{
+    // Three radii: the two discs side by side with one radius of air between them, on
+    // the left (the ball's height label is on its right).
+    return layout_.axes == 1 ? float(-3.0 * layout_.ballRadius) : 0.0f;
+}
+
+void BallView::setGhosts(const std::vector<float>& xyz, const QString& legend)
+{
+    if (!std::all_of(xyz.begin(), xyz.end(), [](float x) { return std::isfinite(x); }))
+        return; // never draw a NaN: keep the last good frame
+    std::vector<float> shifted = xyz;
+    const float offset = ghostOffset();
+    for (std::size_t i = 0; i < shifted.size(); i += 3)
+        shifted[i] += offset;
+    if (legend != ghostLegend_) {
+        ghostLegend_ = legend;
+        update();
+    }
+    if (shifted == ghosts_)
+        return;
+    ghosts_ = std::move(shifted);
+    ghostsDirty_ = true;
+    update();
+}
+
+bool BallView::ghostPixel(int ball, QPointF& pixel) const
+{
+    if (ball < 0 || std::size_t(3 * ball + 2) >= ghosts_.size())
+        return false;
+    const auto k = static_cast<std::size_t>(3 * ball);
+    return camera_.project(QVector3D(ghosts_[k], ghosts_[k + 1], ghosts_[k + 2]), size(), pixel);
+}
+
 void BallView::setSelected(int ball)
 {
     if (ball == selected_)
@@ -215,12 +250,14 @@ void BallView::uploadPending()
         renderer_.setColours(colours_);
     if (ballsDirty_)
         renderer_.setBalls(balls_);
+    if (ghostsDirty_)
+        renderer_.setGhosts(ghosts_);
     if (traceDirty_ || coloursDirty_) {
         const bool has = selected_ >= 0 && std::size_t(selected_) < colours_.size();
         const QColor c = has ? QColor::fromRgb(colours_[std::size_t(selected_)]).darker(150) : QColor(Qt::darkGray);
         renderer_.setTrace(trace_, c);
     }
-    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = false;
+    geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = ghostsDirty_ = false;
 }
 
 RenderInputs BallView::renderInputs() const
@@ -273,8 +310,10 @@ void BallView::paintOverlay(QPainter& p)
     if (!layout_.walls && balls_.size() >= 3 && ballPixel(0, at))
         drawHaloText(p, at + QPointF(14.0, 0.0), QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1),
                      QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
+    if (!ghostLegend_.isEmpty())
+        drawHaloText(p, QPointF(12, 20), ghostLegend_, QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
     if (!glError_.isEmpty())
-        drawHaloText(p, QPointF(12, 20), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
+        drawHaloText(p, QPointF(12, 40), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
     if (keyFocus_)
         drawHaloText(p, QPointF(12, height() - 14),
                      tr("Arrow keys move the camera; Esc gives the keys back to the transport"),

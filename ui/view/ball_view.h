@@ -41,6 +41,13 @@ public:
     void setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours, bool reframe);
     // Ball centres, x y z per ball. A frame holding a non-finite number is not drawn.
     void setBalls(const std::vector<float>& xyz);
+    // A comparison run's ball centres, drawn ghosted, and the legend that says which run
+    // is which ("solid: report, ghost: physical rk4"); empty `xyz` and `legend`: none.
+    // In the vertical-only scene both runs move on one line, so the ghosts are drawn
+    // beside it (ghostOffset() along x), never over the solid balls.
+    void setGhosts(const std::vector<float>& xyz, const QString& legend);
+    float ghostOffset() const;
+    QString ghostLegend() const { return ghostLegend_; }
     void setSelected(int ball);
     void setTrace(std::vector<QVector3D> points);
     // The balls' colours (0xRRGGBB, one per ball) and the clear colour, for the window's theme.
@@ -56,6 +63,8 @@ public:
     int selected() const { return selected_; }
     // Window pixel of ball `ball` of the current frame; false when it is not in view.
     bool ballPixel(int ball, QPointF& pixel) const;
+    // Window pixel of the centre of ghost `ball` (offset included); false when none or out of view.
+    bool ghostPixel(int ball, QPointF& pixel) const;
     QString glError() const { return glError_; }
 
 signals:
@@ -98,8 +107,10 @@ private:
     QColor background_{0xec, 0xf0, 0xf5};
     std::vector<float> balls_;
     std::vector<QVector3D> trace_;
+    std::vector<float> ghosts_; // as drawn: offset already applied
+    QString ghostLegend_;
     int selected_ = 0;
-    bool geometryDirty_ = false, coloursDirty_ = false, ballsDirty_ = false, traceDirty_ = false;
+    bool geometryDirty_ = false, coloursDirty_ = false, ballsDirty_ = false, traceDirty_ = false, ghostsDirty_ = false;
     QString glError_;
     QPoint pressPos_, lastPos_;
     Qt::MouseButton dragButton_ = Qt::NoButton;

@@ -27,7 +27,8 @@ std::unique_ptr<QOpenGLShaderProgram> program(const char* name, QString& error)
 
 SceneRenderer::SceneRenderer()
     : corners_(QOpenGLBuffer::VertexBuffer), positions_(QOpenGLBuffer::VertexBuffer),
-      colours_(QOpenGLBuffer::VertexBuffer), flat_(QOpenGLBuffer::VertexBuffer), trace_(QOpenGLBuffer::VertexBuffer)
+      ghostPositions_(QOpenGLBuffer::VertexBuffer), colours_(QOpenGLBuffer::VertexBuffer),
+      flat_(QOpenGLBuffer::VertexBuffer), trace_(QOpenGLBuffer::VertexBuffer)
 {
 }
 
@@ -38,17 +39,19 @@ bool SceneRenderer::initialize(QString& error)
     initializeOpenGLFunctions();
     if (!buildPrograms(error))
         return false;
-    for (QOpenGLBuffer* b : {&corners_, &positions_, &colours_, &flat_, &trace_}) {
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &flat_, &trace_}) {
         b->create();
         b->setUsagePattern(QOpenGLBuffer::DynamicDraw);
     }
     corners_.bind();
     corners_.allocate(quadCorners, sizeof quadCorners);
     positions_.setUsagePattern(QOpenGLBuffer::StreamDraw);
-    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &shadowVao_, &flatVao_, &traceVao_})
+    ghostPositions_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &ghostVao_, &shadowVao_, &flatVao_, &traceVao_})
         vao->create();
-    setupInstanced(ballVao_, true);
-    setupInstanced(shadowVao_, false);
+    setupInstanced(ballVao_, positions_, true);
+    setupInstanced(ghostVao_, ghostPositions_, true);
+    setupInstanced(shadowVao_, positions_, false);
     setupFlat(flatVao_, flat_);
     setupFlat(traceVao_, trace_);
     ready_ = true;
@@ -65,13 +68,13 @@ bool SceneRenderer::buildPrograms(QString& error)
     return flatProgram_ != nullptr;
 }
 
-void SceneRenderer::setupInstanced(QOpenGLVertexArrayObject& vao, bool withColours)
+void SceneRenderer::setupInstanced(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& centres, bool withColours)
 {
     QOpenGLVertexArrayObject::Binder bind(&vao);
     corners_.bind();
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-    positions_.bind();
+    centres.bind();
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glVertexAttribDivisor(1, 1); // one centre per ball
@@ -97,9 +100,9 @@ void SceneRenderer::setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buff
 void SceneRenderer::release()
 {
     ready_ = false;
-    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &shadowVao_, &flatVao_, &traceVao_})
+    for (QOpenGLVertexArrayObject* vao : {&ballVao_, &ghostVao_, &shadowVao_, &flatVao_, &traceVao_})
         vao->destroy();
-    for (QOpenGLBuffer* b : {&corners_, &positions_, &colours_, &flat_, &trace_})
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &flat_, &trace_})
         b->destroy();
     ballProgram_.reset();
     shadowProgram_.reset();
@@ -138,6 +141,13 @@ void SceneRenderer::setBalls(const std::vector<float>& xyz)
     balls_ = static_cast<int>(xyz.size() / 3);
     positions_.bind();
     positions_.allocate(xyz.data(), static_cast<int>(xyz.size() * sizeof(float)));
+}
+
+void SceneRenderer::setGhosts(const std::vector<float>& xyz)
+{
+    ghosts_ = static_cast<int>(xyz.size() / 3);
+    ghostPositions_.bind();
+    ghostPositions_.allocate(xyz.data(), static_cast<int>(xyz.size() * sizeof(float)));
 }
 
 void SceneRenderer::setTrace(const std::vector<QVector3D>& points, const QColor& colour)
@@ -190,8 +200,25 @@ void SceneRenderer::draw(const RenderInputs& in)
         ballProgram_->setUniformValue("selected", in.selected);
         ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
         ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
+        ballProgram_->setUniformValue("ghost", 0);
         ballVao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_); // every ball in one call
+    }
+    if (ghosts_ > 0) {
+        // After the solid balls, blended and without writing depth: a ghost in front of a
+        // ball tints it, one behind it is hidden by it, and ghosts never hide each other.
+        setCommonUniforms(*ballProgram_, in);
+        ballProgram_->setUniformValue("selected", -1);
+        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
+        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
+        ballProgram_->setUniformValue("ghost", 1);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        ghostVao_.bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ghosts_); // every ghost in one call
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
     }
 
     flatProgram_->bind();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The GL side of the 3D view (OpenGL 3.3 core): one instanced draw call ray-casts every
-// ball as a sphere impostor, one more lays the contact shadows on the floor, and a plain
+// ball as a sphere impostor, one more draws a comparison run's balls as translucent
+// "ghosts" (the same impostors, blended, with a bright rim), one more lays the contact
+// shadows on the floor, and a plain
 // coloured-vertex program draws the floor, box, scale and trace. Every call here needs
 // the view's context current; release() frees all GL objects before it goes away.
 #pragma once
@@ -29,7 +31,7 @@ struct RenderInputs {
     float minPixels = 4.0f;     // smallest drawn ball radius on screen
     int selected = -1;
     float floorY = 0.0f;
-    float fadeHeight = 1.0f; // contact shadows fade out at this height
+    float fadeHeight = 1.0f;             // contact shadows fade out at this height
     QColor background{0xec, 0xf0, 0xf5}; // the clear colour (the window's theme)
 };
 
@@ -48,21 +50,23 @@ public:
     void setGeometry(const SceneGeometry& geometry);
     void setColours(const std::vector<unsigned>& rgb);
     void setBalls(const std::vector<float>& xyz);
+    // The comparison run's ball centres (empty: none), drawn in the balls' colours.
+    void setGhosts(const std::vector<float>& xyz);
     void setTrace(const std::vector<QVector3D>& points, const QColor& colour);
     void draw(const RenderInputs& in);
 
 private:
     bool buildPrograms(QString& error);
-    void setupInstanced(QOpenGLVertexArrayObject& vao, bool withColours);
+    void setupInstanced(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& centres, bool withColours);
     void setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buffer);
     void setCommonUniforms(QOpenGLShaderProgram& program, const RenderInputs& in);
     void drawFlat(const RenderInputs& in);
 
     bool ready_ = false;
     std::unique_ptr<QOpenGLShaderProgram> ballProgram_, shadowProgram_, flatProgram_;
-    QOpenGLVertexArrayObject ballVao_, shadowVao_, flatVao_, traceVao_;
-    QOpenGLBuffer corners_, positions_, colours_, flat_, trace_;
-    int balls_ = 0, floorVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0, traceVertices_ = 0;
+    QOpenGLVertexArrayObject ballVao_, ghostVao_, shadowVao_, flatVao_, traceVao_;
+    QOpenGLBuffer corners_, positions_, ghostPositions_, colours_, flat_, trace_;
+    int balls_ = 0, ghosts_ = 0, floorVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0, traceVertices_ = 0;
 };
 
 } // namespace ab::ui
