@@ -121,8 +121,13 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
     error_->hide();
     form->addRow(error_);
 
-    for (QComboBox* box : {model_, integrator_, impacts_, compare_, compareImpacts_})
+    for (QComboBox* box : {model_, integrator_, impacts_, compare_, compareImpacts_}) {
+        // The longest entry ("physical, Symplectic Euler (symplectic-euler)") must not
+        // widen the panel past its column: the box is elided, the list shows it whole.
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(12);
         connect(box, &QComboBox::currentIndexChanged, this, [this] { propose(); });
+    }
     for (QLineEdit* field : {dt_, steps_})
         connect(field, &QLineEdit::editingFinished, this, [this] { propose(); });
 }
