@@ -88,8 +88,12 @@ void drawPanel(QPainter& p, const QRectF& area, const Panel& panel)
     const QFontMetricsF fm(p.font());
     const double h = fm.height();
     const QRectF plot = area.adjusted(fm.horizontalAdvance("-00000") + 2.0 * h, 1.6 * h, -h, -2.4 * h);
-    const auto [x0, x1] = finiteRange(*panel.x);
-    auto [y0, y1] = finiteRange(panel.y);
+    // Plain variables, not structured bindings: the lambda below captures them, which
+    // clang before 16 refuses for bindings.
+    const auto xRange = finiteRange(*panel.x);
+    const double x0 = xRange.first, x1 = xRange.second;
+    const auto yRange = finiteRange(panel.y);
+    double y0 = yRange.first, y1 = yRange.second;
     const double tick = niceTickStep(y1 - y0, 5); // the value axis ends on ticks
     y0 = std::floor(y0 / tick) * tick;
     y1 = std::ceil(y1 / tick) * tick;
