@@ -175,25 +175,29 @@ std::optional<Broadphase> parseBroadphase(std::string_view key)
     return parseKey(broadphaseKeys, key);
 }
 
+namespace {
+
+// The values of a key table, in its order.
+template <typename Value, std::size_t N>
+std::vector<Value> valuesOf(const std::array<std::pair<Value, std::string_view>, N>& table)
+{
+    std::vector<Value> values;
+    for (const auto& entry : table)
+        values.push_back(entry.first);
+    return values;
+}
+
+} // namespace
+
 const std::vector<ModelKind>& allModels()
 {
-    static const std::vector<ModelKind> list = [] {
-        std::vector<ModelKind> l;
-        for (const auto& [m, key] : modelKeys)
-            l.push_back(m);
-        return l;
-    }();
+    static const std::vector<ModelKind> list = valuesOf(modelKeys);
     return list;
 }
 
 const std::vector<Integrator>& allIntegrators()
 {
-    static const std::vector<Integrator> list = [] {
-        std::vector<Integrator> l;
-        for (const auto& [i, name] : integratorKeys)
-            l.push_back(i);
-        return l;
-    }();
+    static const std::vector<Integrator> list = valuesOf(integratorKeys);
     return list;
 }
 

@@ -45,9 +45,7 @@ RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int tr
     const std::size_t keyframeBytes =
         (6 * sizeof(double) + sizeof(int)) * static_cast<std::size_t>(std::max(state_.size(), 1));
     maxKeyframes_ = std::max<std::size_t>(keyframeBudget / keyframeBytes, 2); // the start is always kept
-    current_ = makeFrame(0, state_, meter_);
-    status_.t = state_.t;
-    status_.energy = current_.scene.energy.total();
+    publishCurrent();                                                         // no other thread yet
     status_.energyPerUnitMass = meter_.perUnitMass();
     status_.finished = maxSteps_ <= 0;
     if (!finiteState(state_))
@@ -234,11 +232,9 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
 
     if (finalOk)
         recording_.add(status_.steps, state_);
-    const diagnostics::HealthStatus worst = health_->worst();
-    status_.health = worst.level;
-    status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
+    publishHealth();
     if (health_->figures().nonfinite && failure.empty())
-        failure = worst.line(); // an overflowing energy: nothing after it can be drawn
+        failure = status_.healthLine; // an overflowing energy: nothing after it can be drawn
     if (!failure.empty() || !finalOk) {
         finish(failure.empty() ? "the state became non-finite" : failure);
         return;
@@ -251,9 +247,7 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
     havePrevious_ = true;
     ++status_.steps;
     status_.stepSeconds = status_.stepSeconds == 0.0 ? seconds : 0.9 * status_.stepSeconds + 0.1 * seconds;
-    current_ = makeFrame(status_.steps, state_, meter_);
-    status_.t = state_.t;
-    status_.energy = current_.scene.energy.total();
+    publishCurrent();
     if (newFailure && status_.playing) {
         status_.playing = false; // stop where the failure showed: the state just recorded
         status_.pausedOnHealth = true;
@@ -277,6 +271,20 @@ bool RunEngine::checkHealth()
     const bool grew = failures > failuresSeen_;
     failuresSeen_ = failures;
     return grew;
+}
+
+void RunEngine::publishHealth()
+{
+    const diagnostics::HealthStatus worst = health_->worst();
+    status_.health = worst.level;
+    status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
+}
+
+void RunEngine::publishCurrent()
+{
+    current_ = makeFrame(status_.steps, state_, meter_);
+    status_.t = state_.t;
+    status_.energy = current_.scene.energy.total();
 }
 
 void RunEngine::keepKeyframe()
@@ -347,12 +355,8 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     status_.pausedOnHealth = false; // playing stays as resumeFrom and any later play() left it
     status_.warning.clear();
     status_.notice.clear();
-    const diagnostics::HealthStatus worst = health_->worst();
-    status_.health = worst.level;
-    status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
-    current_ = makeFrame(target, state_, meter_);
-    status_.t = state_.t;
-    status_.energy = current_.scene.energy.total();
+    publishHealth();
+    publishCurrent();
     anchorTime_ = Clock::now();
     anchorStep_ = target;
     ++status_.version;

@@ -104,6 +104,10 @@ private:
     void fork(std::unique_lock<std::mutex>& lock);
     // Keeps state_ (before its step) as a keyframe when its step falls on the stride.
     void keepKeyframe();
+    // Under the lock: the health check's worst finding, and state_ as the current frame
+    // of step status_.steps, into the shared snapshot.
+    void publishHealth();
+    void publishCurrent();
     void finish(std::string warning);
 
     std::unique_ptr<Simulation> sim_;
