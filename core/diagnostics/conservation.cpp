@@ -41,6 +41,11 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
     // report's g = 0.00982 and r = 1). Without gravity: r/100 per unit of time.
     const double still = ballRadius(spec) / 100.0;
     movingSpeed_ = g_ > 0.0 ? std::sqrt(2.0 * g_ * still) : still;
+    // Appendix D moves only balls whose centre is above -(L/2 - r): one on the floor keeps
+    // whatever velocity a collision gave it but never moves again, so it is not counted
+    // as moving, whatever its speed (its kinetic energy still counts: the state holds it).
+    if (spec.model == ModelKind::Report && spec.scene == SceneId::ManyBalls)
+        frozenAtOrBelow_ = floor_ + ballRadius(spec);
 }
 
 ConservationSample ConservationMeter::measure(const State& s) const
@@ -60,7 +65,7 @@ ConservationSample ConservationMeter::measureWorld(const State& s) const
     const double moving2 = movingSpeed_ * movingSpeed_;
     for (int i = 0; i < s.size(); ++i) {
         out.momentum += mass_[static_cast<std::size_t>(i)] * s.v.col(i);
-        out.moving += s.v.col(i).squaredNorm() > moving2 ? 1 : 0;
+        out.moving += s.v.col(i).squaredNorm() > moving2 && s.p(1, i) > frozenAtOrBelow_ ? 1 : 0;
     }
     return out;
 }
@@ -85,7 +90,7 @@ ConservationSample ConservationMeter::measureEqualMasses(const State& s) const
         v2sum += v2;
         heights += y[i] - floor_;
         px += vx[i], py += vy[i], pz += vz[i];
-        moving += v2 > moving2 ? 1 : 0;
+        moving += v2 > moving2 && y[i] > frozenAtOrBelow_ ? 1 : 0;
     }
     ConservationSample out;
     out.energy.kinetic = 0.5 * m * v2sum;

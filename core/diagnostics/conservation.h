@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -58,6 +59,8 @@ private:
     double g_ = 0.0;
     double floor_ = 0.0;
     double movingSpeed_ = 0.0;
+    // A centre at or below this height never moves (the report's stage 4); -inf elsewhere.
+    double frozenAtOrBelow_ = -std::numeric_limits<double>::infinity();
     std::optional<physical::SpringFloor> spring_;
     const physical::World* world_ = nullptr; // the physical model's, when the simulation has one (not owned)
 };

@@ -174,6 +174,21 @@ private slots:
         QCOMPARE(states[80].impacts, 4LL); // t = 8
     }
 
+    void aReportBallOnTheFloorIsNotMovingWhateverItsSpeed()
+    {
+        // Appendix D updates only centres above -(L/2 - r) = -49: a ball there with a speed
+        // from a collision never moves again; the same speed above the floor moves.
+        const auto sim = ab::makeSimulation(testing::spec(ab::SceneId::ManyBalls, {"n=2"}));
+        const ab::ConservationMeter meter(*sim);
+        ab::State s = sim->start();
+        s.p.col(0) = Eigen::Vector3d(0, -49, 0);
+        s.p.col(1) = Eigen::Vector3d(10, 0, 0);
+        s.v.col(0) = s.v.col(1) = Eigen::Vector3d(0.5, 0, 0);
+        const auto sample = meter.measure(s);
+        QCOMPARE(sample.moving, 1LL);
+        QVERIFY(std::abs(sample.energy.kinetic - 2 * 0.5 * 0.25) < 1e-15); // both still hold energy
+    }
+
     void manyBallsCountImpactsOnceBallsReachTheFloor()
     {
         for (ab::ModelKind model : {ab::ModelKind::Report, ab::ModelKind::Physical}) {
