@@ -181,6 +181,7 @@ double flyRange(double* x, double* y, double* z, double* vx, double* vy, double*
                 long long& impacts)
 {
     double maxSpeed2 = 0.0;
+    long long wallRebounds = 0; // counted here, added to `impacts` once: one worker's tally
     for (int i = begin; i < end; ++i) {
         const int before = rebounds[i];
         double p[3] = {x[i] + vx[i] * h, y[i], z[i] + vz[i] * h};
@@ -203,12 +204,13 @@ double flyRange(double* x, double* y, double* z, double* vx, double* vy, double*
         if (resting && v[0] * v[0] + v[2] * v[2] < w.restSpeed * w.restSpeed)
             v[0] = v[2] = 0.0;
         supported[i] = resting;
-        impacts += rebounds[i] - before; // the wall rebounds of this flight
+        wallRebounds += rebounds[i] - before; // the wall rebounds of this flight
         place(i, p[0], p[1], p[2]);
         x[i] = p[0], y[i] = p[1], z[i] = p[2];
         vx[i] = v[0], vy[i] = v[1], vz[i] = v[2];
         maxSpeed2 = std::max(maxSpeed2, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     }
+    impacts += wallRebounds;
     return maxSpeed2;
 }
 
@@ -501,6 +503,8 @@ void ManyBallsEngine::resolveList(const std::vector<Pair>& pairs, Pass pass, int
     const double reach2 = pass == Pass::Support ? contact * contact * kTouching * kTouching : contact * contact;
     const double e = settings_.ballRestitution;
     double& maxSpeed2 = workerMaxSpeed2_[static_cast<std::size_t>(worker)];
+    long long pairRebounds = 0; // added to the worker's tally once, at the end: the tallies
+                                // of two workers share a cache line
     const auto speed2 = [&](std::uint32_t i) { return vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]; };
     const auto inside = [&](double& c) { c = std::clamp(c, lo_, hi_); };
     for (const Pair& pair : pairs) {
@@ -550,7 +554,7 @@ void ManyBallsEngine::resolveList(const std::vector<Pair>& pairs, Pass pass, int
             if (bounces) {
                 ++rebounds_[a];
                 ++rebounds_[b];
-                ++workerImpacts_[static_cast<std::size_t>(worker)]; // the pair's impact, once
+                ++pairRebounds; // the pair's impact, once
             }
             maxSpeed2 = std::max({maxSpeed2, speed2(a), speed2(b)});
         }
@@ -562,6 +566,7 @@ void ManyBallsEngine::resolveList(const std::vector<Pair>& pairs, Pass pass, int
         inside(x[a]), inside(y[a]), inside(z[a]);
         inside(x[b]), inside(y[b]), inside(z[b]);
     }
+    workerImpacts_[static_cast<std::size_t>(worker)] += pairRebounds;
 }
 
 void ManyBallsEngine::reorder(int block)
