@@ -48,8 +48,9 @@ double drawingCpuSeconds()
     return ticks / double(sysconf(_SC_CLK_TCK));
 }
 
-// --measure-frames: plays with the turntable on (so every frame is drawn anew), then
-// prints the frame times and quits. The run's own options come from --scene and --set.
+// --measure-frames: plays with the turntable on (so every frame is drawn anew) and on
+// through the health check's pauses, then prints the frame times and quits. The run's own options come from --scene and
+// --set.
 void measureFrames(ab::ui::MainWindow& window, double seconds)
 {
     auto* samples = new std::vector<std::pair<double, double>>;
@@ -65,6 +66,11 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
                      [samples](double paint, double interval) { samples->emplace_back(paint, interval); });
     window.setTurntable(true);
     window.controller().play();
+    // A measurement plays on through the health check's pauses (it still reports them).
+    QObject::connect(&window.controller(), &ab::ui::RunController::playingChanged, &window, [&window](bool playing) {
+        if (!playing && window.controller().status().pausedOnHealth)
+            window.controller().play();
+    });
     const double cpuStart = drawingCpuSeconds();
     QTimer::singleShot(int(seconds * 1000), qApp, [samples, &window, cpuStart] {
         const double cpu = drawingCpuSeconds() - cpuStart;

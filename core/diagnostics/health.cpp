@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "health.h"
 
+#include "../broadphase/grid_geometry.h"
 #include "../physical/spring_contact.h"
 #include "../stability/stability_limit.h"
 
@@ -135,6 +136,9 @@ struct HealthCheck::Impl {
     Health level = Health::Ok; // of the step being checked
     double t = 0.0;            // of the state being checked
     long long pairChecks = 0;
+    int sampledAbove = HealthCheck::defaultSampledAbove;
+    // gridOverlaps' arrays, kept between steps.
+    std::vector<std::uint32_t> cellOf, order, cellStart, cursor;
 
     Impl(const Simulation& s, const State& start)
         : sim(s), spec(s.spec()), report(spec.model == ModelKind::Report), dt(s.dt()), g(spec.params.real("g")),
@@ -467,34 +471,43 @@ struct HealthCheck::Impl {
             return;
         }
         // Many balls: overlaps on a grid of cells 2r wide; every 10th step beyond 1e5.
-        if (n > 100'000 && pairChecks++ % 10 != 0)
+        if (n > sampledAbove && pairChecks++ % 10 != 0)
             return;
         gridOverlaps(b, a);
     }
 
     void gridOverlaps(const State& b, const State& a)
     {
-        const double cell = 2.0 * r;
+        // Counting sort into cells at least 2r wide over the balls' bounding cube
+        // (broadphase::GridGeometry: two centres closer than 2r lie in the same or adjacent
+        // cells), then each ball against the 27 cells around it, each pair once (j > i):
+        // O(N + cells) a step, no allocation once the arrays have grown.
         const int n = a.size();
-        auto key = [&](int x, int y, int z) {
-            return (static_cast<std::uint64_t>(x & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
-                   static_cast<std::uint64_t>(z & 0x1FFFFF);
-        };
-        auto coord = [&](int i, int axis) { return static_cast<int>(std::floor(a.p(axis, i) / cell)); };
-        std::vector<std::pair<std::uint64_t, int>> cells(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i)
-            cells[static_cast<std::size_t>(i)] = {key(coord(i, 0), coord(i, 1), coord(i, 2)), i};
-        std::sort(cells.begin(), cells.end());
+        const double lo = a.p.minCoeff(), hi = a.p.maxCoeff(); // a cube holding every centre
+        const broadphase::GridGeometry geo(lo, std::max(hi - lo, 2.0 * r), 2.0 * r,
+                                           4 * static_cast<std::size_t>(n) + 64);
+        cellOf.resize(static_cast<std::size_t>(n));
+        order.resize(static_cast<std::size_t>(n));
+        cellStart.assign(geo.cellCount() + 1, 0);
         for (int i = 0; i < n; ++i) {
-            const int cx = coord(i, 0), cy = coord(i, 1), cz = coord(i, 2);
-            for (int dx = -1; dx <= 1; ++dx)
+            const std::uint32_t c = geo.cellOf(a.p(0, i), a.p(1, i), a.p(2, i));
+            cellOf[static_cast<std::size_t>(i)] = c;
+            ++cellStart[c + 1];
+        }
+        for (std::size_t c = 1; c < cellStart.size(); ++c)
+            cellStart[c] += cellStart[c - 1];
+        cursor.assign(cellStart.begin(), cellStart.end() - 1);
+        for (int i = 0; i < n; ++i)
+            order[cursor[cellOf[static_cast<std::size_t>(i)]]++] = static_cast<std::uint32_t>(i);
+        for (int i = 0; i < n; ++i) {
+            const int cx = geo.coord(a.p(0, i)), cy = geo.coord(a.p(1, i)), cz = geo.coord(a.p(2, i));
+            for (int dz = -1; dz <= 1; ++dz)
                 for (int dy = -1; dy <= 1; ++dy)
-                    for (int dz = -1; dz <= 1; ++dz) {
-                        const std::uint64_t k = key(cx + dx, cy + dy, cz + dz);
-                        auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, 0));
-                        for (; it != cells.end() && it->first == k; ++it)
-                            if (it->second > i)
-                                checkPair(b, a, i, it->second);
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const std::uint32_t c = geo.cell(cx + dx, cy + dy, cz + dz);
+                        for (std::uint32_t k = cellStart[c]; k < cellStart[c + 1]; ++k)
+                            if (const int j = static_cast<int>(order[k]); j > i)
+                                checkPair(b, a, i, j);
                     }
         }
     }
@@ -519,7 +532,11 @@ struct HealthCheck::Impl {
     }
 };
 
-HealthCheck::HealthCheck(const Simulation& sim, const State& start) : impl_(std::make_unique<Impl>(sim, start)) {}
+HealthCheck::HealthCheck(const Simulation& sim, const State& start, int sampledAbove)
+    : impl_(std::make_unique<Impl>(sim, start))
+{
+    impl_->sampledAbove = sampledAbove;
+}
 
 HealthCheck::~HealthCheck() = default;
 
