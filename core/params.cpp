@@ -30,8 +30,7 @@ namespace {
 
 // std::from_chars over the whole trimmed text, with an optional leading '+'.
 // Returns the error code, or std::errc::invalid_argument for anything but one number.
-template <typename T>
-std::errc fromWholeText(std::string_view text, T& value)
+template <typename T> std::errc fromWholeText(std::string_view text, T& value)
 {
     const std::string_view t = trim(text);
     const char* first = t.data();
@@ -80,12 +79,21 @@ Eigen::Vector3d parseVector(std::string_view text, std::string_view what)
         try {
             v[i] = parseReal(part, what);
         } catch (const InputError&) {
-            throw InputError(std::string(what) + ": " + quoted(text) + " is not a vector x,y,z of three finite numbers");
+            throw InputError(std::string(what) + ": " + quoted(text) +
+                             " is not a vector x,y,z of three finite numbers");
         }
         if (i < 2)
             rest = rest.substr(comma + 1);
     }
     return v;
+}
+
+std::string formatSignificant(double x, int digits)
+{
+    // std::to_chars, not printf: a Qt application sets the C locale from the environment.
+    char buf[64];
+    const auto end = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, digits);
+    return std::string(buf, end.ptr);
 }
 
 std::string formatNumber(double x)
@@ -122,9 +130,7 @@ std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value)
 std::string formatRange(const ParamSpec& spec)
 {
     const bool integer = spec.kind == ParamKind::Integer;
-    auto num = [&](double x) {
-        return integer ? std::to_string(static_cast<long long>(x)) : formatNumber(x);
-    };
+    auto num = [&](double x) { return integer ? std::to_string(static_cast<long long>(x)) : formatNumber(x); };
     return std::string(spec.minExclusive ? "(" : "[") + num(spec.min) + ", " + num(spec.max) + "]";
 }
 

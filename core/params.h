@@ -29,16 +29,16 @@ enum class ParamKind { Real, Integer, Vector };
 enum ModelMask : unsigned { ReportModel = 1u, PhysicalModel = 2u, BothModels = 3u };
 
 struct ParamSpec {
-    std::string key;       // name used by --set, presets and the contract
-    std::string symbol;    // as written in the report or the textbook (plain text)
-    std::string unit;      // "1" for dimensionless
+    std::string key;    // name used by --set, presets and the contract
+    std::string symbol; // as written in the report or the textbook (plain text)
+    std::string unit;   // "1" for dimensionless
     ParamKind kind = ParamKind::Real;
     Eigen::Vector3d defaultValue = Eigen::Vector3d::Zero(); // scalars use component 0
-    double min = 0.0;      // per component, inclusive unless minExclusive
-    double max = 0.0;      // per component, inclusive
+    double min = 0.0;                                       // per component, inclusive unless minExclusive
+    double max = 0.0;                                       // per component, inclusive
     bool minExclusive = false;
-    std::string equation;  // equation or section of the report, e.g. "eq 2.3"
-    std::string meaning;   // one line
+    std::string equation; // equation or section of the report, e.g. "eq 2.3"
+    std::string meaning;  // one line
     unsigned models = BothModels;
 
     bool usedBy(unsigned model) const { return (models & model) != 0; }
@@ -68,7 +68,10 @@ public:
     const ParamSpec& spec(std::string_view key) const;
     bool isDefault(std::size_t index) const { return values_[index] == (*table_)[index].defaultValue; }
 
-    friend bool operator==(const ParamValues& a, const ParamValues& b) { return a.table_ == b.table_ && a.values_ == b.values_; }
+    friend bool operator==(const ParamValues& a, const ParamValues& b)
+    {
+        return a.table_ == b.table_ && a.values_ == b.values_;
+    }
 
 private:
     const std::vector<ParamSpec>* table_;
@@ -92,6 +95,8 @@ std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector
 // representation that reads back exactly.
 std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value);
 std::string formatNumber(double x);
+// `digits` significant digits for messages ("34.58", "1.2e-05"), whatever the locale.
+std::string formatSignificant(double x, int digits);
 std::string formatRange(const ParamSpec& spec);
 
 } // namespace ab

@@ -54,9 +54,7 @@ enum class Kind {
 // Three significant figures for messages.
 std::string num(double x)
 {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
+    return formatSignificant(x, 3);
 }
 
 // Where a centre may be: the floor and the walls as limits on the centre, infinite where

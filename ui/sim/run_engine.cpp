@@ -225,10 +225,10 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
     try {
         sim_->step(state_, next_); // may correct state_: it is final only now
         if (!finiteState(next_))
-            failure = "the step from t = " + formatNumber(state_.t) +
+            failure = "the step from t = " + formatSignificant(state_.t, 6) +
                       " produced a non-finite number; try a smaller step or another integrator";
     } catch (const std::exception& e) {
-        failure = "the step from t = " + formatNumber(state_.t) + " failed: " + e.what();
+        failure = "the step from t = " + formatSignificant(state_.t, 6) + " failed: " + e.what();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     const bool finalOk = finiteState(state_);
@@ -245,7 +245,7 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
         return;
     }
     if (state_.halted && status_.notice.empty())
-        status_.notice = "the report's bounce limit stopped the motion at t = " + formatNumber(state_.t);
+        status_.notice = "the report's bounce limit stopped the motion at t = " + formatSignificant(state_.t, 6);
     // Rotate: the final state becomes the previous one, the new state the current one.
     std::swap(previous_, state_);
     std::swap(state_, next_);
