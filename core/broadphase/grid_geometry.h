@@ -51,6 +51,9 @@ public:
                s * (static_cast<std::uint32_t>(iy + 1) + s * static_cast<std::uint32_t>(iz + 1));
     }
     std::uint32_t cellOf(double x, double y, double z) const { return cell(coord(x), coord(y), coord(z)); }
+    // The terms of coord(): (x - lo) scale, clamped to [0, top].
+    double scale() const { return scale_; }
+    double top() const { return top_; }
 
     friend bool operator==(const GridGeometry&, const GridGeometry&) = default;
 

@@ -8,6 +8,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define AB_AVX2_KERNEL 1
+#endif
 
 namespace ab::broadphase {
 
@@ -65,6 +69,256 @@ float floatThreshold(double reach2, double side)
     return std::nextafter(static_cast<float>(t), HUGE_VALF);
 }
 
+// What a pair search over one slab reads: the sorted grid, the centres, the thresholds,
+// the row offsets of the half neighbourhood and the slab's range of sorted places.
+struct Search {
+    const std::uint32_t* start;
+    const std::uint32_t* order;
+    const std::uint32_t* sortedCell;
+    const float* fx;
+    const float* fy;
+    const float* fz;
+    const double* x;
+    const double* y;
+    const double* z;
+    double reach2;
+    float threshold;
+    std::uint32_t rows[4];
+    std::uint32_t qBegin, qEnd;
+};
+
+// The exact test in double that confirms a float candidate.
+inline void confirm(const Search& s, std::uint32_t a, std::uint32_t b, std::vector<Pair>& out)
+{
+    const double dx = s.x[b] - s.x[a];
+    const double dy = s.y[b] - s.y[a];
+    const double dz = s.z[b] - s.z[a];
+    if (dx * dx + dy * dy + dz * dz < s.reach2)
+        out.push_back({a, b});
+}
+
+// Confirms the candidates of the five windows of ball a, in window order, each window's
+// first 4 places by their hit bits, then its places beyond 4 (bit 4) one by one. Both
+// kernels list pairs through this, so they list them in the same order.
+inline void confirmWindows(const Search& s, std::uint32_t a, const std::uint32_t begin[5],
+                           const std::uint32_t length[5], const unsigned hits[5], std::vector<Pair>& out)
+{
+    for (int k = 0; k < 5; ++k) {
+        for (unsigned h = hits[k] & 15u; h != 0; h &= h - 1)
+            confirm(s, a, s.order[begin[k] + static_cast<std::uint32_t>(__builtin_ctz(h))], out);
+        if (hits[k] & 16u)
+            for (std::uint32_t j = begin[k] + 4; j < begin[k] + length[k]; ++j)
+                confirm(s, a, s.order[j], out);
+    }
+}
+
+void searchPortable(const Search& s, std::vector<Pair>& out)
+{
+    std::uint32_t cell = ~0u;
+    std::uint32_t begin[5] = {}, length[5] = {};
+    std::uint32_t ownEnd = 0; // the end of its own cell and the +x one
+    for (std::uint32_t q = s.qBegin; q < s.qEnd; ++q) {
+        if (s.sortedCell[q] != cell) {
+            cell = s.sortedCell[q];
+            for (int k = 0; k < 4; ++k) {
+                begin[k] = s.start[cell + s.rows[k]];
+                length[k] = s.start[cell + s.rows[k] + 3] - begin[k];
+            }
+            ownEnd = s.start[cell + 2];
+        }
+        // Later balls of its own cell and the +x cell.
+        begin[4] = q + 1;
+        length[4] = ownEnd - begin[4];
+        const FloatCentre centre(s.fx[q], s.fy[q], s.fz[q], s.threshold);
+        unsigned hits[5];
+        unsigned any = 0;
+        for (int k = 0; k < 5; ++k) {
+            hits[k] = windowHits(s.fx, s.fy, s.fz, begin[k], length[k], centre);
+            any |= hits[k];
+        }
+        if (any == 0) [[likely]]
+            continue;
+        confirmWindows(s, s.order[q], begin, length, hits, out);
+    }
+}
+
+#if defined(AB_AVX2_KERNEL)
+// Two windows' first 4 places, window `lo` in the low lanes and `hi` in the high ones.
+__attribute__((target("avx2"))) inline __m256 twoWindows(const float* f, std::uint32_t lo, std::uint32_t hi)
+{
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f + lo)), _mm_loadu_ps(f + hi), 1);
+}
+
+// Eight all-ones lanes then eight zero lanes: the 4 lanes loaded from kLanes + 4 - l (as
+// int32) are all ones in their first min(l, 4) places.
+alignas(32) constexpr std::int32_t kLanes[12] = {-1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0};
+
+__attribute__((target("avx2"))) inline __m128 lengthMask(std::uint32_t length)
+{
+    return _mm_loadu_ps(reinterpret_cast<const float*>(kLanes + 4 - std::min(length, 4u)));
+}
+
+// Lanes 0-3 inside window lo (of length a), lanes 4-7 inside window hi (of length b).
+__attribute__((target("avx2"))) inline __m256 twoLengths(std::uint32_t a, std::uint32_t b)
+{
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(lengthMask(a)), lengthMask(b), 1);
+}
+
+// The squared float distance from (cx, cy, cz) to 8 places, compared with the threshold,
+// masked by `inside`: one bit a lane.
+__attribute__((target("avx2"))) inline unsigned eightHits(__m256 wx, __m256 wy, __m256 wz, __m256 inside, __m256 cx,
+                                                          __m256 cy, __m256 cz, __m256 threshold)
+{
+    const __m256 dx = _mm256_sub_ps(wx, cx);
+    const __m256 dy = _mm256_sub_ps(wy, cy);
+    const __m256 dz = _mm256_sub_ps(wz, cz);
+    const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
+    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(d2, threshold, _CMP_LT_OQ), inside)));
+}
+
+__attribute__((target("avx2"))) void searchAvx2(const Search& s, std::vector<Pair>& out)
+{
+    // Local copies: the calls that confirm pairs would otherwise make the compiler load
+    // them again from `s` on every ball.
+    const std::uint32_t* start = s.start;
+    const std::uint32_t* sortedCell = s.sortedCell;
+    const float* fx = s.fx;
+    const float* fy = s.fy;
+    const float* fz = s.fz;
+    const std::uint32_t rows[4] = {s.rows[0], s.rows[1], s.rows[2], s.rows[3]};
+    const std::uint32_t qEnd = s.qEnd;
+    const __m256 threshold = _mm256_set1_ps(s.threshold);
+    std::uint32_t cell = ~0u;
+    std::uint32_t begin[5] = {}, length[5] = {};
+    std::uint32_t ownEnd = 0;
+    unsigned rowLonger = 0; // bit k: row window k is longer than 4
+    __m256 x01 = _mm256_setzero_ps(), y01 = x01, z01 = x01, in01 = x01;
+    __m256 x23 = x01, y23 = x01, z23 = x01, in23 = x01;
+    for (std::uint32_t q = s.qBegin; q < qEnd; ++q) {
+        if (sortedCell[q] != cell) {
+            // Entering a cell: its four row windows, loaded once for all its balls.
+            cell = sortedCell[q];
+            rowLonger = 0;
+            for (int k = 0; k < 4; ++k) {
+                begin[k] = start[cell + rows[k]];
+                length[k] = start[cell + rows[k] + 3] - begin[k];
+                rowLonger |= length[k] > 4 ? 1u << k : 0u;
+            }
+            ownEnd = start[cell + 2];
+            x01 = twoWindows(fx, begin[0], begin[1]);
+            y01 = twoWindows(fy, begin[0], begin[1]);
+            z01 = twoWindows(fz, begin[0], begin[1]);
+            x23 = twoWindows(fx, begin[2], begin[3]);
+            y23 = twoWindows(fy, begin[2], begin[3]);
+            z23 = twoWindows(fz, begin[2], begin[3]);
+            in01 = twoLengths(length[0], length[1]);
+            in23 = twoLengths(length[2], length[3]);
+        }
+        begin[4] = q + 1;
+        length[4] = ownEnd - begin[4];
+        const __m256 cx = _mm256_set1_ps(fx[q]), cy = _mm256_set1_ps(fy[q]), cz = _mm256_set1_ps(fz[q]);
+        const unsigned h01 = eightHits(x01, y01, z01, in01, cx, cy, cz, threshold);
+        const unsigned h23 = eightHits(x23, y23, z23, in23, cx, cy, cz, threshold);
+        // Its own window, in the low lanes.
+        const __m128 ox = _mm_sub_ps(_mm_loadu_ps(fx + begin[4]), _mm256_castps256_ps128(cx));
+        const __m128 oy = _mm_sub_ps(_mm_loadu_ps(fy + begin[4]), _mm256_castps256_ps128(cy));
+        const __m128 oz = _mm_sub_ps(_mm_loadu_ps(fz + begin[4]), _mm256_castps256_ps128(cz));
+        const __m128 od2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ox, ox), _mm_mul_ps(oy, oy)), _mm_mul_ps(oz, oz));
+        const unsigned own = static_cast<unsigned>(_mm_movemask_ps(_mm_and_ps(
+                                 _mm_cmplt_ps(od2, _mm256_castps256_ps128(threshold)), lengthMask(length[4])))) |
+                             (length[4] > 4 ? 16u : 0u);
+        if ((h01 | h23 | own | rowLonger) == 0) [[likely]]
+            continue;
+        const unsigned hits[5] = {(h01 & 15u) | (rowLonger & 1u ? 16u : 0u), (h01 >> 4) | (rowLonger & 2u ? 16u : 0u),
+                                  (h23 & 15u) | (rowLonger & 4u ? 16u : 0u), (h23 >> 4) | (rowLonger & 8u ? 16u : 0u),
+                                  own};
+        confirmWindows(s, s.order[q], begin, length, hits, out);
+    }
+}
+#endif
+
+// c[k] becomes running + c[0] + ... + c[k] (the inclusive running sum, from `running`).
+void runningSums(std::uint32_t* c, std::size_t count, std::uint32_t running)
+{
+    for (std::size_t k = 0; k < count; ++k) {
+        running += c[k];
+        c[k] = running;
+    }
+}
+
+#if defined(AB_AVX2_KERNEL)
+// The same sums eight at a time: within each 128-bit half by two shifted adds (lane l
+// gains lanes l-1, then l-2 and l-3), the low half's total carried into the high half,
+// then the running total of everything before added to all eight. Integer sums, so the
+// result is the scalar one exactly.
+__attribute__((target("avx2"))) void runningSumsAvx2(std::uint32_t* c, std::size_t count, std::uint32_t running)
+{
+    std::size_t k = 0;
+    __m256i total = _mm256_set1_epi32(static_cast<int>(running));
+    const __m256i last = _mm256_set1_epi32(7);
+    for (; k + 8 <= count; k += 8) {
+        __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + k));
+        v = _mm256_add_epi32(v, _mm256_slli_si256(v, 4));
+        v = _mm256_add_epi32(v, _mm256_slli_si256(v, 8));
+        const __m256i lowTotal = _mm256_shuffle_epi32(v, _MM_SHUFFLE(3, 3, 3, 3));
+        v = _mm256_add_epi32(v, _mm256_permute2x128_si256(lowTotal, lowTotal, 0x08)); // low half: zero
+        v = _mm256_add_epi32(v, total);
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(c + k), v);
+        total = _mm256_permutevar8x32_epi32(v, last);
+    }
+    runningSums(c + k, count - k, static_cast<std::uint32_t>(_mm256_cvtsi256_si32(total)));
+}
+#endif
+
+#if defined(AB_AVX2_KERNEL)
+// GridGeometry::coord of four values: (x - lo) scale clamped to [0, top], truncated.
+// _mm256_max_pd(u, 0) returns its second operand when u is NaN, so NaN falls in cell 0
+// as in coord; for every other u the two agree with std::max(0, u) and std::min(., top).
+__attribute__((target("avx2"))) inline __m128i fourCoords(const double* x, __m256d lo, __m256d scale, __m256d top)
+{
+    const __m256d u = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(x), lo), scale);
+    return _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(u, _mm256_setzero_pd()), top));
+}
+
+// Placer::operator() for balls [begin, end), four at a time, the rest one by one. Slabs
+// change rarely along the engine's order (by cell), so four balls of one slab are counted
+// with one addition.
+__attribute__((target("avx2"))) void placeRunAvx2(const GridGeometry& geo, const std::uint8_t* slabOfLayer,
+                                                  std::uint32_t* cell, std::uint8_t* slab, std::uint32_t* count,
+                                                  int begin, int end, const double* x, const double* y, const double* z)
+{
+    const __m256d lo = _mm256_set1_pd(geo.lo()), scale = _mm256_set1_pd(geo.scale()), top = _mm256_set1_pd(geo.top());
+    const __m128i one = _mm_set1_epi32(1);
+    const __m128i stride = _mm_set1_epi32(static_cast<int>(geo.rowStride()));
+    int i = begin;
+    for (; i + 4 <= end; i += 4) {
+        const __m128i ix = _mm_add_epi32(fourCoords(x + i, lo, scale, top), one);
+        const __m128i iy = _mm_add_epi32(fourCoords(y + i, lo, scale, top), one);
+        const __m128i layer = fourCoords(z + i, lo, scale, top);
+        const __m128i iz = _mm_add_epi32(layer, one);
+        // GridGeometry::cell: (ix + 1) + s ((iy + 1) + s (iz + 1)), in 32-bit wrapping arithmetic.
+        const __m128i c = _mm_add_epi32(ix, _mm_mullo_epi32(stride, _mm_add_epi32(iy, _mm_mullo_epi32(stride, iz))));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(cell + i), c);
+        const std::uint8_t s[4] = {slabOfLayer[_mm_cvtsi128_si32(layer)], slabOfLayer[_mm_extract_epi32(layer, 1)],
+                                   slabOfLayer[_mm_extract_epi32(layer, 2)], slabOfLayer[_mm_extract_epi32(layer, 3)]};
+        std::copy(s, s + 4, slab + i);
+        if (s[0] == s[3] && s[1] == s[3] && s[2] == s[3]) {
+            count[s[0]] += 4;
+        } else {
+            for (std::uint8_t k : s)
+                ++count[k];
+        }
+    }
+    for (; i < end; ++i) {
+        const int iz = geo.coord(z[i]);
+        const std::uint8_t s = slabOfLayer[iz];
+        cell[i] = geo.cell(geo.coord(x[i]), geo.coord(y[i]), iz);
+        slab[i] = s;
+        ++count[s];
+    }
+}
+#endif
+
 } // namespace
 
 void UniformGrid::reset(const GridGeometry& geometry, int balls, int maxSlabs)
@@ -108,8 +362,21 @@ UniformGrid::Placer UniformGrid::placer(int block)
     p.cell_ = cell_.data();
     p.slab_ = slab_.data();
     p.count_ = blockSlabCount_.data() + static_cast<std::size_t>(block) * slabs;
+    p.avx2_ = kernel_ == Kernel::Avx2;
     std::fill(p.count_, p.count_ + slabs, 0u);
     return p;
+}
+
+void UniformGrid::Placer::placeRun(int begin, int end, const double* x, const double* y, const double* z) const
+{
+#if defined(AB_AVX2_KERNEL)
+    if (avx2_) {
+        placeRunAvx2(*geo_, slabOfLayer_, cell_, slab_, count_, begin, end, x, y, z);
+        return;
+    }
+#endif
+    for (int i = begin; i < end; ++i)
+        (*this)(i, x[i], y[i], z[i]);
 }
 
 void UniformGrid::countSlabs()
@@ -128,38 +395,49 @@ void UniformGrid::sortSlab(int s, const double* x, const double* y, const double
     const int slabs = slabCount();
     const std::size_t c0 = slabFirstCell(s), c1 = slabFirstCell(s + 1);
     std::uint32_t* start = cellStart_.data();
+    const std::uint32_t* cellOf = cell_.data();
+    const std::uint8_t* slabOf = slab_.data();
+    const std::uint32_t* blockCounts = blockSlabCount_.data();
+    std::uint32_t* order = order_.data();
+    std::uint32_t* sortedCell = sortedCell_.data();
+    float* fx = fx_.data();
+    float* fy = fy_.data();
+    float* fz = fz_.data();
+    const auto slab = static_cast<std::uint8_t>(s);
     std::fill(start + c0, start + c1, 0u);
     // Only the blocks that hold balls of this slab are read.
-    const auto holds = [&](int b) { return blockSlabCount_[static_cast<std::size_t>(b) * slabs + s] != 0; };
+    const auto holds = [&](int b) { return blockCounts[static_cast<std::size_t>(b) * slabs + s] != 0; };
     const auto blockEnd = [&](int b) { return static_cast<std::size_t>(blockBegin(b + 1)); };
     for (int b = 0; b < blockCount(); ++b)
         if (holds(b))
             for (std::size_t i = static_cast<std::size_t>(blockBegin(b)); i < blockEnd(b); ++i)
-                if (slab_[i] == s)
-                    ++start[cell_[i]];
-    // Counts to end positions, then place from the last ball back: each cell keeps its
-    // balls in index order and start[c] ends as the first position of cell c.
-    std::uint32_t running = slabBegin_[static_cast<std::size_t>(s)];
-    for (std::size_t c = c0; c < c1; ++c) {
-        running += start[c];
-        start[c] = running;
-    }
+                if (slabOf[i] == slab)
+                    ++start[cellOf[i]];
+                    // Counts to end positions, then place from the last ball back: each cell keeps its
+                    // balls in index order and start[c] ends as the first position of cell c.
+#if defined(AB_AVX2_KERNEL)
+    if (kernel_ == Kernel::Avx2)
+        runningSumsAvx2(start + c0, c1 - c0, slabBegin_[static_cast<std::size_t>(s)]);
+    else
+#endif
+        runningSums(start + c0, c1 - c0, slabBegin_[static_cast<std::size_t>(s)]);
     const double lo = geo_.lo(), side = geo_.side();
-    // Clamped to the cube, which never brings two coordinates further apart.
-    const auto copy = [&](double v) { return static_cast<float>(std::clamp(v - lo, 0.0, side)); };
+    // Clamped to the cube, which never brings two coordinates further apart. As min(max())
+    // rather than std::clamp, which compiles to branches; the same value, NaN included.
+    const auto copy = [&](double v) { return static_cast<float>(std::min(std::max(v - lo, 0.0), side)); };
     for (int b = blockCount() - 1; b >= 0; --b) {
         if (!holds(b))
             continue;
         for (std::size_t i = blockEnd(b); i-- > static_cast<std::size_t>(blockBegin(b));) {
-            if (slab_[i] != s)
+            if (slabOf[i] != slab)
                 continue;
-            const std::uint32_t c = cell_[i];
+            const std::uint32_t c = cellOf[i];
             const std::uint32_t q = --start[c];
-            order_[q] = static_cast<std::uint32_t>(i);
-            sortedCell_[q] = c;
-            fx_[q] = copy(x[i]);
-            fy_[q] = copy(y[i]);
-            fz_[q] = copy(z[i]);
+            order[q] = static_cast<std::uint32_t>(i);
+            sortedCell[q] = c;
+            fx[q] = copy(x[i]);
+            fy[q] = copy(y[i]);
+            fz[q] = copy(z[i]);
         }
     }
 }
@@ -179,58 +457,54 @@ void UniformGrid::build(const double* x, const double* y, const double* z)
 void UniformGrid::findPairs(int s, const double* x, const double* y, const double* z, double reach2,
                             std::vector<Pair>& out) const
 {
-    const std::uint32_t* start = cellStart_.data();
-    const std::uint32_t* order = order_.data();
-    const float* fx = fx_.data();
-    const float* fy = fy_.data();
-    const float* fz = fz_.data();
-    const float threshold = floatThreshold(reach2, geo_.side());
     const std::uint32_t row = geo_.rowStride(), layer = geo_.layerStride();
-    // The first cells of the other rows of the half neighbourhood, less one (x - 1):
-    // +y in this layer, then y-1, y, y+1 in the next layer.
-    const std::uint32_t rows[4] = {row - 1, layer - row - 1, layer - 1, layer + row - 1};
-    const auto exact = [&](std::uint32_t a, std::uint32_t b) {
-        const double dx = x[b] - x[a];
-        const double dy = y[b] - y[a];
-        const double dz = z[b] - z[a];
-        if (dx * dx + dy * dy + dz * dz < reach2)
-            out.push_back({a, b});
-    };
-    const std::uint32_t qEnd = start[slabFirstCell(s + 1)];
-    std::uint32_t cell = ~0u;
-    std::uint32_t begin[5] = {}, length[5] = {};
-    for (std::uint32_t q = start[slabFirstCell(s)]; q < qEnd; ++q) {
-        if (sortedCell_[q] != cell) {
-            cell = sortedCell_[q];
-            for (int k = 0; k < 4; ++k) {
-                begin[k] = start[cell + rows[k]];
-                length[k] = start[cell + rows[k] + 3] - begin[k];
-            }
-            length[4] = start[cell + 2]; // its own cell and the +x one: made relative below
-        }
-        // Later balls of its own cell and the +x cell.
-        begin[4] = q + 1;
-        const std::uint32_t ownLength = length[4] - begin[4];
-        const FloatCentre centre(fx[q], fy[q], fz[q], threshold);
-        unsigned hits[5];
-        unsigned any = 0;
-        for (int k = 0; k < 5; ++k) {
-            hits[k] = windowHits(fx, fy, fz, begin[k], k == 4 ? ownLength : length[k], centre);
-            any |= hits[k];
-        }
-        if (any == 0) [[likely]]
-            continue;
-        const std::uint32_t a = order[q];
-        for (int k = 0; k < 5; ++k) {
-            for (unsigned h = hits[k] & 15u; h != 0; h &= h - 1)
-                exact(a, order[begin[k] + static_cast<std::uint32_t>(__builtin_ctz(h))]);
-            if (hits[k] & 16u) {
-                const std::uint32_t end = begin[k] + (k == 4 ? ownLength : length[k]);
-                for (std::uint32_t j = begin[k] + 4; j < end; ++j)
-                    exact(a, order[j]);
-            }
-        }
+    const Search search{cellStart_.data(),
+                        order_.data(),
+                        sortedCell_.data(),
+                        fx_.data(),
+                        fy_.data(),
+                        fz_.data(),
+                        x,
+                        y,
+                        z,
+                        reach2,
+                        floatThreshold(reach2, geo_.side()),
+                        // The first cells of the other rows of the half neighbourhood, less
+                        // one (x - 1): +y in this layer, then y-1, y, y+1 in the next layer.
+                        {row - 1, layer - row - 1, layer - 1, layer + row - 1},
+                        cellStart_[slabFirstCell(s)],
+                        cellStart_[slabFirstCell(s + 1)]};
+#if defined(AB_AVX2_KERNEL)
+    if (kernel_ == Kernel::Avx2) {
+        searchAvx2(search, out);
+        return;
     }
+#endif
+    searchPortable(search, out);
+}
+
+bool UniformGrid::runs(Kernel kernel)
+{
+    if (kernel == Kernel::Portable)
+        return true;
+#if defined(AB_AVX2_KERNEL)
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+UniformGrid::Kernel UniformGrid::bestKernel()
+{
+    static const Kernel best = runs(Kernel::Avx2) ? Kernel::Avx2 : Kernel::Portable;
+    return best;
+}
+
+void UniformGrid::setKernel(Kernel kernel)
+{
+    if (!runs(kernel))
+        throw std::invalid_argument("grid: this processor does not run the chosen pair-search kernel");
+    kernel_ = kernel;
 }
 
 std::size_t UniformGrid::bytes() const

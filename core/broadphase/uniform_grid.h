@@ -21,6 +21,12 @@
 //    slab starts, on one thread), then sortSlab (each slab counting-sorts its balls into
 //    its cells, reading only the blocks that hold some of them: once the engine has
 //    re-ordered its balls by cell, about its own share).
+// 6. The sort and the pair search have two kernels with the same results, pairs in the
+//    same order: the portable one (SSE2 where there is SSE2) and one for AVX2, chosen at
+//    run time when the processor has it. The AVX2 search loads the four row windows of a
+//    cell once, when it enters the cell, two windows to a 256-bit register, and tests each
+//    ball of the cell against them in two operations instead of four; the AVX2 sort turns
+//    cell counts into positions eight cells at a time.
 #pragma once
 
 #include "grid_geometry.h"
@@ -41,6 +47,15 @@ public:
     // Blocks of balls [b 1024, (b + 1) 1024): the unit of the first stage.
     static constexpr int kBlockShift = 10;
     static constexpr int kBlockSize = 1 << kBlockShift;
+
+    // The instruction set of the sort and the pair search (point 6).
+    enum class Kernel : unsigned char { Portable, Avx2 };
+    // Whether this processor runs `kernel`; the best one that it runs.
+    static bool runs(Kernel kernel);
+    static Kernel bestKernel();
+    // The kernel sortSlab and findPairs use: bestKernel() unless set (tests compare them).
+    void setKernel(Kernel kernel);
+    Kernel kernel() const { return kernel_; }
 
     // Sizes the grid for `balls` balls with at most `maxSlabs` (<= 255) slabs, fewer when
     // there are fewer z layers.
@@ -64,6 +79,9 @@ public:
             slab_[i] = s;
             ++count_[s];
         }
+        // The same for every ball i in [begin, end) of the block, centres x[i], y[i], z[i],
+        // four at a time with AVX2 where the grid's kernel is Kernel::Avx2.
+        void placeRun(int begin, int end, const double* x, const double* y, const double* z) const;
 
     private:
         friend class UniformGrid;
@@ -72,6 +90,7 @@ public:
         std::uint32_t* cell_ = nullptr;
         std::uint8_t* slab_ = nullptr;
         std::uint32_t* count_ = nullptr; // the block's row
+        bool avx2_ = false;
     };
     Placer placer(int block);
     // Stage 2, on one thread once every block is placed: where each slab's balls start.
@@ -107,6 +126,7 @@ private:
     }
 
     GridGeometry geo_;
+    Kernel kernel_ = bestKernel();
     int n_ = 0;
     float floatLo_ = 0.0f, floatHi_ = 0.0f;     // the float copies are clamped to this range
     std::vector<int> slabFirstLayer_;           // slabCount() + 1 entries

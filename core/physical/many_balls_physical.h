@@ -31,6 +31,8 @@ struct ManyBallsSettings {
     Broadphase broadphase = Broadphase::Grid;
     int threads = 1;
     double dt = 1.0;
+    // The instruction set of the grid and of the flight (the same numbers with either).
+    broadphase::UniformGrid::Kernel kernel = broadphase::UniformGrid::bestKernel();
 
     // Throws InputError for what many-balls does not offer (event, implicit integrators).
     static ManyBallsSettings fromSpec(const RunSpec& spec, double dt);

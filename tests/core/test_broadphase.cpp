@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The broadphase: the counting-sort grid finds exactly the pairs the all-pairs test finds
 // (random scenes, centres on cell boundaries, on and beyond the walls, huge boxes, any
-// number of slabs), its sort is stable and the same for any number of slabs, and the
+// number of slabs), with the portable and the AVX2 kernel alike, pair for pair in the same
+// order; its sort is stable and the same for any number of slabs and kernel, and the
 // report's linked cells find the same lowest-index ball as a scan of every ball.
 #include "core/broadphase/cell_list.h"
 #include "core/broadphase/uniform_grid.h"
@@ -47,17 +48,36 @@ PairSet allPairs(const Scene& s)
     return normalised(out);
 }
 
-PairSet gridPairs(const Scene& s, int maxSlabs, std::size_t maxCells = 1u << 22)
+// The pairs the grid lists with `kernel`, in the order it lists them.
+std::vector<Pair> gridList(const Scene& s, int maxSlabs, std::size_t maxCells, UniformGrid::Kernel kernel)
 {
     const int n = static_cast<int>(s.p.cols());
     const double* x = s.p.data();
     UniformGrid grid;
+    grid.setKernel(kernel);
     grid.reset(GridGeometry(s.lo, s.side, s.reach, maxCells), n, maxSlabs);
     grid.build(x, x + n, x + 2 * n);
     std::vector<Pair> out;
     for (int slab = 0; slab < grid.slabCount(); ++slab)
         grid.findPairs(slab, x, x + n, x + 2 * n, s.reach * s.reach, out);
-    return normalised(out);
+    return out;
+}
+
+bool sameList(const std::vector<Pair>& a, const std::vector<Pair>& b)
+{
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const Pair& p, const Pair& q) { return p.a == q.a && p.b == q.b; });
+}
+
+// The grid's pairs. Every kernel this processor runs must list the same pairs in the same
+// order (the order the contacts are resolved in); throws otherwise.
+PairSet gridPairs(const Scene& s, int maxSlabs, std::size_t maxCells = 1u << 22)
+{
+    const std::vector<Pair> portable = gridList(s, maxSlabs, maxCells, UniformGrid::Kernel::Portable);
+    if (UniformGrid::runs(UniformGrid::Kernel::Avx2) &&
+        !sameList(gridList(s, maxSlabs, maxCells, UniformGrid::Kernel::Avx2), portable))
+        throw std::runtime_error("the AVX2 kernel lists other pairs, or the same in another order");
+    return normalised(portable);
 }
 
 Scene randomScene(int n, double side, double reach, std::uint64_t seed, double spill = 0.0)
@@ -196,13 +216,35 @@ private slots:
                     QVERIFY(one.order()[q - 1] < b);
             }
         }
-        for (int slabs : {1, 2, 11}) {
-            UniformGrid many;
-            many.reset(geo, n, slabs);
-            many.build(x, x + n, x + 2 * n);
-            QVERIFY(many.order() == one.order());
-            QVERIFY(many.cellStart() == one.cellStart());
+        for (int slabs : {1, 2, 11})
+            for (auto kernel : {UniformGrid::Kernel::Portable, UniformGrid::Kernel::Avx2}) {
+                if (!UniformGrid::runs(kernel))
+                    continue;
+                UniformGrid many;
+                many.setKernel(kernel);
+                many.reset(geo, n, slabs);
+                many.build(x, x + n, x + 2 * n);
+                QVERIFY(many.order() == one.order());
+                QVERIFY(many.cellStart() == one.cellStart());
+            }
+    }
+
+    void avx2KernelListsThePortablePairsInTheSameOrder()
+    {
+        // gridPairs compares the kernels in every test above; this one names it and checks
+        // that windows longer than 4 places (the dense scene) and empty ones both occur.
+        if (!UniformGrid::runs(UniformGrid::Kernel::Avx2))
+            QSKIP("this processor has no AVX2: only the portable kernel runs");
+        QVERIFY(UniformGrid::bestKernel() == UniformGrid::Kernel::Avx2);
+        for (const auto& [n, side] : {std::pair{3000, 30.0}, {9000, 72.0}, {500, 400.0}}) {
+            const Scene s = randomScene(n, side, 2.0, 8, 1.0);
+            const auto portable = gridList(s, 128, 1u << 22, UniformGrid::Kernel::Portable);
+            QVERIFY(sameList(gridList(s, 128, 1u << 22, UniformGrid::Kernel::Avx2), portable));
+            QVERIFY(normalised(portable) == allPairs(s));
         }
+        UniformGrid grid;
+        grid.setKernel(UniformGrid::Kernel::Portable);
+        QVERIFY(grid.kernel() == UniformGrid::Kernel::Portable);
     }
 
     void slabsOfOneParityShareNoBall()
