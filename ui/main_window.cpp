@@ -58,6 +58,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&controller_, &RunController::speedChanged, transport_, &TransportBar::setSpeed);
     connect(&controller_, &RunController::selectionChanged, this, &MainWindow::ballSelected);
     fpsClock_.start();
+    panelTimer_.setInterval(20); // a part a tick: about a frame apart under software OpenGL
+    connect(&panelTimer_, &QTimer::timeout, this, &MainWindow::refreshPanelPart);
     turntable_.setInterval(16);
     connect(&turntable_, &QTimer::timeout, this, [this] {
         if (view_)
@@ -343,6 +345,8 @@ void MainWindow::runReplaced()
     }
     transport_->goLive();
     panelClock_.invalidate();
+    cancelPanelRefresh();
+    panelsPlaying_ = false;
     refresh();
 }
 
@@ -360,6 +364,7 @@ void MainWindow::ballSelected(int ball)
     if (view_)
         view_->setSelected(ball);
     panelClock_.invalidate();
+    cancelPanelRefresh();
     refresh();
 }
 
@@ -423,31 +428,89 @@ void MainWindow::refresh()
         return;
     const EngineStatus status = controller_.status();
     const std::optional<double> viewT = transport_->viewTime();
-    // While playing, the 3D view follows every new state but the panels (charts, slider,
-    // readings) redraw four times a second: with a GL view in the window every widget
-    // redraw recomposes the whole window, which software OpenGL pays for per frame.
-    const bool panelsDue = !status.playing || !panelClock_.isValid() || panelClock_.elapsed() >= 250;
-    double start = 0.0;
-    controller_.engine().read([&](const Recording& rec, const Frame& current) {
-        refreshView(rec, current, viewT);
-        if (panelsDue)
-            charts_->showTrack(rec.track());
-        start = rec.frames().empty() ? current.t : rec.frames().front().t;
-    });
+    controller_.engine().read([&](const Recording& rec, const Frame& current) { refreshView(rec, current, viewT); });
     if (const RunEngine* compare = controller_.comparisonEngine()) {
         compare->read([&](const Recording& rec, const Frame& current) {
             if (view_) { // the comparison at the moment shown: it never runs ahead of the main run
                 const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
                 view_->setGhosts((shown ? shown : &current)->p, view_->ghostLegend());
             }
-            if (panelsDue)
-                charts_->showComparisonTrack(rec.track());
         });
     }
-    if (!panelsDue)
+    // The 3D view follows every new state. The panels redraw four times a second while
+    // playing: with a GL view in the window every widget redraw recomposes the whole
+    // window, which software OpenGL pays for in the frame it lands in, so their refresh
+    // is spread over the next frames, a chart at a time. The moment play stops is spread
+    // too (it is still part of playback: the run ending under a lecturer's eyes); any
+    // other change of a stopped run (a scrub, a new selection) redraws them at once.
+    const bool stopping = panelsPlaying_ && !status.playing;
+    const bool spread = status.playing || stopping;
+    panelsPlaying_ = status.playing;
+    if (!spread) {
+        cancelPanelRefresh();
+        refreshPanels();
+        return;
+    }
+    const bool due = stopping || !panelClock_.isValid() || panelClock_.elapsed() >= 250;
+    if (!due || (panelPart_ >= 0 && !stopping))
         return;
     panelClock_.restart();
+    panelPart_ = 0; // from the first chart again, with what is recorded now
+    panelTimer_.start();
+}
+
+void MainWindow::cancelPanelRefresh()
+{
+    panelTimer_.stop();
+    panelPart_ = -1;
+}
+
+void MainWindow::refreshPanels()
+{
+    const EngineStatus status = controller_.status();
+    const std::optional<double> viewT = transport_->viewTime();
+    controller_.engine().read([&](const Recording& rec, const Frame&) { charts_->showTrack(rec.track()); });
+    if (const RunEngine* compare = controller_.comparisonEngine())
+        compare->read([&](const Recording& rec, const Frame&) { charts_->showComparisonTrack(rec.track()); });
+    panelClock_.restart();
     charts_->setCursorTime(viewT ? viewT : std::optional<double>(status.t));
+    refreshReadings(status);
+}
+
+void MainWindow::refreshPanelPart()
+{
+    if (!controller_.hasRun() || panelPart_ < 0) {
+        cancelPanelRefresh();
+        return;
+    }
+    const EngineStatus status = controller_.status();
+    const std::optional<double> viewT = transport_->viewTime();
+    const std::optional<double> cursor = viewT ? viewT : std::optional<double>(status.t);
+    // The next shown chart; hidden ones take no tick.
+    while (static_cast<std::size_t>(panelPart_) < ChartPanel::kSlots) {
+        const auto slot = static_cast<std::size_t>(panelPart_++);
+        bool drawn = false;
+        controller_.engine().read([&](const Recording& rec, const Frame&) {
+            if (const RunEngine* compare = controller_.comparisonEngine())
+                compare->read([&](const Recording& other, const Frame&) {
+                    drawn = charts_->refreshSlot(slot, rec.track(), &other.track(), cursor);
+                });
+            else
+                drawn = charts_->refreshSlot(slot, rec.track(), nullptr, cursor);
+        });
+        if (drawn)
+            return;
+    }
+    refreshReadings(status); // the last part: slider and readings
+    cancelPanelRefresh();
+}
+
+void MainWindow::refreshReadings(const EngineStatus& status)
+{
+    double start = status.t;
+    controller_.engine().read([&](const Recording& rec, const Frame& current) {
+        start = rec.frames().empty() ? current.t : rec.frames().front().t;
+    });
     transport_->setRecorded(start, status.t, coreText(sceneInfo(scene_).timeUnit));
     readout_->show(status);
     if (view_ && fpsClock_.elapsed() >= 1000) {

@@ -109,7 +109,17 @@ private:
     BallView* view_ = nullptr;
     QLabel* placeholder_ = nullptr;
     StatusReadout* readout_ = nullptr;
+    // While playing, the panels (charts, slider, readings) are refreshed four times a
+    // second, one part a tick of panelTimer_ (refreshPanelPart), so that no frame of the
+    // 3D view pays for all of them; panelPart_ is the next part, -1 when none is due.
+    void refreshPanels();
+    void refreshPanelPart();
+    void refreshReadings(const EngineStatus& status);
+    void cancelPanelRefresh();
     QElapsedTimer panelClock_;
+    QTimer panelTimer_;
+    int panelPart_ = -1;
+    bool panelsPlaying_ = false;
     QElapsedTimer fpsClock_;
     int framesSinceFps_ = 0;
     QTimer turntable_;

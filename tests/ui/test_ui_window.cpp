@@ -228,6 +228,38 @@ private slots:
         QCOMPARE(simulatedTime(w), 0.0);
     }
 
+    void whilePlayingThePanelsKeepUpAndTheStopShowsTheLastState()
+    {
+        // The panels' refresh is spread over frames while playing (MainWindow::refresh);
+        // it must still follow the run, and the moment play stops must leave every chart,
+        // the slider and the readings at the last recorded state.
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showScene(SceneId::Box3d);
+        auto lastTime = [&](ab::ui::ChartKind kind) {
+            const QList<QPointF> points = w.charts()->chart(kind)->line(0)->points();
+            return points.isEmpty() ? -1.0 : points.back().x();
+        };
+        QTest::keyClick(&w, Qt::Key_Space);
+        QTRY_VERIFY(w.controller().status().steps > 40);
+        // Played on, both charts have caught up with at least the first 0.2 s.
+        QTRY_VERIFY(lastTime(ab::ui::ChartKind::Position) >= 0.2);
+        QTRY_VERIFY(lastTime(ab::ui::ChartKind::Velocity) >= 0.2);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QTRY_VERIFY(!w.controller().status().playing);
+        const double end = w.controller().status().t;
+        double recorded = -1.0; // the last final state: the state shown is final after the next step
+        w.controller().engine().read(
+            [&](const ab::ui::Recording& rec, const ab::ui::Frame&) { recorded = rec.track().t().back(); });
+        QVERIFY(recorded > 0.2 && recorded < end);
+        QTRY_COMPARE(lastTime(ab::ui::ChartKind::Position), recorded);
+        QTRY_COMPARE(lastTime(ab::ui::ChartKind::Velocity), recorded);
+        QTRY_COMPARE(w.readout()->timeText(), QString("t = %1 s").arg(end, 0, 'f', 2));
+        QSlider* time = w.transport()->timeSlider();
+        QCOMPARE(time->value(), time->maximum()); // live, at the end of the record
+    }
+
     void speedRunsFromATenthToTenTimesRealTime()
     {
         MainWindow w;

@@ -135,6 +135,19 @@ void ChartPanel::showComparisonTrack(const MotionTrack& track)
         charts_[i]->showComparisonTrack(track, std::max(views_[i]->width(), 200));
 }
 
+bool ChartPanel::refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
+                             std::optional<double> cursor)
+{
+    if (slot >= kinds || !views_[slot] || views_[slot]->isHidden())
+        return false;
+    const int width = std::max(views_[slot]->width(), 200);
+    charts_[slot]->showTrack(track, width);
+    if (comparison)
+        charts_[slot]->showComparisonTrack(*comparison, width);
+    charts_[slot]->setCursorTime(cursor);
+    return true;
+}
+
 MotionChart* ChartPanel::chart(ChartKind kind) const
 {
     return charts_[slot(kind)];

@@ -38,6 +38,13 @@ public:
     // removes its lines from every chart.
     void setComparison(const QString& mainName, const QString& compareName);
     void showComparisonTrack(const MotionTrack& track);
+    // One chart's slot at a time, so that a playing window can spread a refresh of the
+    // panel over several frames: the track, the comparison's (when not null) and the
+    // cursor of slot `slot` in [0, kSlots). False for a slot whose chart is hidden, which
+    // is left alone.
+    static constexpr std::size_t kSlots = 5;
+    bool refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
+                     std::optional<double> cursor);
 
     MotionChart* chart(ChartKind kind) const;
     QChartView* chartView(ChartKind kind) const;
@@ -51,7 +58,7 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    static constexpr std::size_t kinds = 5;
+    static constexpr std::size_t kinds = kSlots;
     std::array<MotionChart*, kinds> charts_{};
     std::array<QChartView*, kinds> views_{};
     std::array<bool, kinds> applies_{};

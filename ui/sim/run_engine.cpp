@@ -9,6 +9,7 @@
 
 #ifdef __linux__
 #include <pthread.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #endif
@@ -23,12 +24,15 @@ bool finiteState(const State& s)
 }
 
 // The window's drawing comes first: on a busy machine a long step (10,000 balls) must
-// not take the core the window and software OpenGL need. Linux threads have their own
-// nice value; elsewhere the thread keeps the default priority.
+// not take the core the window and software OpenGL need. On Linux the stepping thread is
+// SCHED_IDLE (it runs on what the drawing leaves; any thread may lower itself to it),
+// or nice 8 where that is refused; elsewhere it keeps the default priority.
 void lowerThisThreadsPriority()
 {
 #ifdef __linux__
-    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
+    sched_param idle{};
+    if (pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle) != 0)
+        (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
     pthread_setname_np(pthread_self(), "ab-stepper"); // named for profilers and --measure-frames
 #endif
 }

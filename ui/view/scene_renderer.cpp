@@ -185,6 +185,18 @@ void SceneRenderer::draw(const RenderInputs& in)
     drawFlat(in); // floor and lines
 
     if (balls_ > 0) {
+        setCommonUniforms(*ballProgram_, in);
+        ballProgram_->setUniformValue("selected", in.selected);
+        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
+        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
+        ballProgram_->setUniformValue("ghost", 0);
+        ballVao_.bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_); // every ball in one call
+
+        // The floor cues after the balls: where a ball hides the floor, the depth test
+        // drops the cue's fragments before they are shaded (the cue writes no depth of its
+        // own, so the test can run first), which matters for a pile of thousands of balls
+        // under software OpenGL. What is seen is the same as drawing them first.
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
@@ -195,14 +207,6 @@ void SceneRenderer::draw(const RenderInputs& in)
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
-
-        setCommonUniforms(*ballProgram_, in);
-        ballProgram_->setUniformValue("selected", in.selected);
-        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
-        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
-        ballProgram_->setUniformValue("ghost", 0);
-        ballVao_.bind();
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, balls_); // every ball in one call
     }
     if (ghosts_ > 0) {
         // After the solid balls, blended and without writing depth: a ghost in front of a
