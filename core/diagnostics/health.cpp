@@ -2,6 +2,7 @@
 #include "health.h"
 
 #include "../broadphase/grid_geometry.h"
+#include "../physical/physical_simulation.h"
 #include "../physical/spring_contact.h"
 #include "../stability/stability_limit.h"
 
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 
 namespace ab::diagnostics {
 
@@ -125,6 +127,7 @@ struct HealthCheck::Impl {
     double tolerance; // round-off allowance on lengths
     std::optional<physical::SpringFloor> spring;
     double springAllowance = infinity;
+    std::vector<double> mass; // the physical model's masses (its World); empty: equal masses
     double e0 = 0.0;
     double energyScale = 0.0;
     HealthFigures fig;
@@ -153,10 +156,16 @@ struct HealthCheck::Impl {
             physical::contactLawOf(spec) != physical::ContactLaw::Impulse) {
             spring = physical::springFloorFor(spec);
         }
+        // The spring floor's energies stay per unit mass: its allowance below takes them so.
+        if (const auto* physical = dynamic_cast<const physical::PhysicalSimulation*>(&s); physical && !spring)
+            mass = physical->world().mass;
         e0 = energy(start);
-        // Gains are relative to the start energy, or to that of a ball raised by the
+        // Gains are relative to the start energy, or to that of the balls raised by the
         // scene's size when the start holds less (a ball at rest on the floor).
-        energyScale = std::max(e0, g * scale * std::max(start.size(), 1));
+        double totalMass = std::max(start.size(), 1);
+        if (!mass.empty())
+            totalMass = std::accumulate(mass.begin(), mass.end(), 0.0);
+        energyScale = std::max(e0, g * scale * totalMass);
         if (spring)
             springAllowance = 2.0 * physical::maxCompression(*spring, e0);
         escapedBall.assign(static_cast<std::size_t>(start.size()), 0);
@@ -164,11 +173,16 @@ struct HealthCheck::Impl {
 
     double potential(double y) const { return spring ? spring->potential(y) : g * (y - walls.lo.y()); }
 
+    // sum m (|v|^2 / 2 + potential): with the physical model's masses where it has them
+    // (two balls of different masses share the energy, not the energy per unit mass), else
+    // per unit mass (the report's and many-balls' equal masses, the spring floor's one ball).
     double energy(const State& s) const
     {
         double e = 0.0;
-        for (int i = 0; i < s.size(); ++i)
-            e += 0.5 * s.v.col(i).squaredNorm() + potential(s.p(1, i));
+        for (int i = 0; i < s.size(); ++i) {
+            const double m = static_cast<std::size_t>(i) < mass.size() ? mass[static_cast<std::size_t>(i)] : 1.0;
+            e += m * (0.5 * s.v.col(i).squaredNorm() + potential(s.p(1, i)));
+        }
         return e;
     }
 

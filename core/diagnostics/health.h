@@ -11,7 +11,8 @@
 //     allowance is twice the compression the start energy allows (failed; at the spring's
 //     backstop, 1.5 times it, failed too: the integrator is unstable; over 1% beyond it, a
 //     warning);
-//  3. energy (kinetic + g times the height above the floor, + the spring's) above its
+//  3. energy (kinetic + g times the height above the floor, + the spring's; each ball
+//     weighed by the physical model's mass, per unit mass where all are equal) above its
 //     start: k and e are at most 1, so any gain is the method's (warning above 1e-6 of the
 //     start, failed above 10%; a start with less energy than a ball raised by the scene's
 //     size is measured against that instead);
