@@ -112,6 +112,26 @@ private slots:
         });
     }
 
+    void aRunWithoutHealthCheckingNeverPausesOnAFinding()
+    {
+        // Two balls at 10,000 m/s each way swap sides within one step: a failure that
+        // pauses a checked run at once. The comparison's engine checks nothing: it plays
+        // on to its end with its health left Ok.
+        const ab::RunSpec spec = testing::spec(
+            SceneId::TwoBalls, {"g=0", "p1=150,20,100", "p2=150,20,200", "v1=0,0,10000", "v2=0,0,-10000"});
+        RunEngine checked(ab::makeSimulation(spec), 20, 0);
+        checked.play(1e6);
+        QTRY_VERIFY(checked.status().pausedOnHealth);
+        QCOMPARE(checked.status().health, ab::diagnostics::Health::Failed);
+        RunEngine unchecked(ab::makeSimulation(spec), 20, 0, ab::ui::Recording::defaultFrameBudget,
+                            RunEngine::defaultKeyframeBudget, RunEngine::HealthChecking::Off);
+        unchecked.play(1e6);
+        QTRY_VERIFY(unchecked.status().finished);
+        QCOMPARE(unchecked.status().steps, 20LL);
+        QVERIFY(!unchecked.status().pausedOnHealth);
+        QCOMPARE(unchecked.status().health, ab::diagnostics::Health::Ok);
+    }
+
     void aFinishedRunGoesOnAfterGoingBack()
     {
         const ab::RunSpec spec = testing::spec(SceneId::Bounce1d);

@@ -106,7 +106,10 @@ void RunController::startEngine(std::unique_ptr<Simulation> sim, std::unique_ptr
         const double ratio = sim->dt() / compare->dt();
         const auto compareSteps =
             static_cast<long long>(std::ceil(static_cast<double>(steps_) * ratio - 1e-9 * std::max(ratio, 1.0)));
-        compare_ = std::make_unique<RunEngine>(std::move(compare), compareSteps, selected_);
+        // The window shows the main run's health only: the comparison runs without a check.
+        compare_ =
+            std::make_unique<RunEngine>(std::move(compare), compareSteps, selected_, Recording::defaultFrameBudget,
+                                        RunEngine::defaultKeyframeBudget, RunEngine::HealthChecking::Off);
         compareStatus_ = compare_->status();
     } else {
         compareStatus_ = {};

@@ -45,11 +45,12 @@ constexpr int kPairsSampledAbove = 2'000;
 } // namespace
 
 RunEngine::RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall, std::size_t frameBudget,
-                     std::size_t keyframeBudget)
+                     std::size_t keyframeBudget, HealthChecking checking)
     : sim_(std::move(sim)), maxSteps_(maxSteps), layout_(layoutFor(sim_->spec())), meter_(*sim_),
       recording_(layout_, meter_, trackedBall, frameBudget), state_(sim_->start())
 {
-    health_.emplace(*sim_, state_, kPairsSampledAbove);
+    if (checking == HealthChecking::On)
+        health_.emplace(*sim_, state_, kPairsSampledAbove);
     // A keyframe holds two 3-vectors of doubles and a counter per ball.
     const std::size_t keyframeBytes =
         (6 * sizeof(double) + sizeof(int)) * static_cast<std::size_t>(std::max(state_.size(), 1));
@@ -242,7 +243,7 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
     if (finalOk)
         recording_.add(status_.steps, state_);
     publishHealth();
-    if (health_->figures().nonfinite && failure.empty())
+    if (health_ && health_->figures().nonfinite && failure.empty())
         failure = status_.healthLine; // an overflowing energy: nothing after it can be drawn
     if (!failure.empty() || !finalOk) {
         finish(failure.empty() ? "the state became non-finite" : failure);
@@ -271,8 +272,8 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
 
 bool RunEngine::checkHealth()
 {
-    if (!havePrevious_)
-        return false; // the start: nothing to compare with yet
+    if (!health_ || !havePrevious_)
+        return false; // no check, or the start: nothing to compare with yet
     health_->check(previous_, state_);
     std::size_t failures = 0;
     for (const diagnostics::HealthStatus& s : health_->issues())
@@ -284,6 +285,10 @@ bool RunEngine::checkHealth()
 
 void RunEngine::publishHealth()
 {
+    // The worst finding changes only with a new kind of finding: its line is built then.
+    if (!health_ || health_->issues().size() == issuesPublished_)
+        return;
+    issuesPublished_ = health_->issues().size();
     const diagnostics::HealthStatus worst = health_->worst();
     status_.health = worst.level;
     status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
@@ -328,12 +333,13 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     // state is final once the step from it is taken, as in takeStep.
     State cur = from.state, nxt, prev;
     bool havePrev = false;
-    health_.emplace(*sim_, sim_->start(), kPairsSampledAbove);
+    if (health_)
+        health_.emplace(*sim_, sim_->start(), kPairsSampledAbove);
     std::string failure;
     try {
         for (long long step = from.step; step < target; ++step) {
             sim_->step(cur, nxt);
-            if (havePrev)
+            if (havePrev && health_)
                 health_->check(prev, cur);
             std::swap(prev, cur);
             std::swap(cur, nxt);
@@ -343,8 +349,9 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
         failure = std::string("going back failed: ") + e.what();
     }
     std::size_t failures = 0;
-    for (const diagnostics::HealthStatus& s : health_->issues())
-        failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+    if (health_)
+        for (const diagnostics::HealthStatus& s : health_->issues())
+            failures += s.level == diagnostics::Health::Failed ? 1 : 0;
 
     lock.lock();
     if (!failure.empty()) {
@@ -364,6 +371,7 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     status_.pausedOnHealth = false; // playing stays as resumeFrom and any later play() left it
     status_.warning.clear();
     status_.notice.clear();
+    issuesPublished_ = kNoneYet; // the re-taken steps' findings are published anew
     publishHealth();
     publishCurrent();
     anchorTime_ = Clock::now();

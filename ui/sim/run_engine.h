@@ -62,9 +62,13 @@ public:
     // Takes the simulation; `maxSteps` ends the run. `rate` is simulated time per second.
     static constexpr std::size_t defaultKeyframeBudget = std::size_t(256) << 20;
 
+    // Off: no health check at all (a comparison run, whose findings the window does not
+    // show): status().health stays Ok.
+    enum class HealthChecking { On, Off };
+
     RunEngine(std::unique_ptr<Simulation> sim, long long maxSteps, int trackedBall,
               std::size_t frameBudget = Recording::defaultFrameBudget,
-              std::size_t keyframeBudget = defaultKeyframeBudget);
+              std::size_t keyframeBudget = defaultKeyframeBudget, HealthChecking checking = HealthChecking::On);
     ~RunEngine();
     RunEngine(const RunEngine&) = delete;
     RunEngine& operator=(const RunEngine&) = delete;
@@ -134,6 +138,8 @@ private:
     bool havePrevious_ = false;
     std::optional<diagnostics::HealthCheck> health_;
     std::size_t failuresSeen_ = 0;
+    static constexpr std::size_t kNoneYet = static_cast<std::size_t>(-1);
+    std::size_t issuesPublished_ = kNoneYet; // health_->issues().size() when status_.health was last set
     struct Keyframe {
         long long step;
         State state; // before the step from it was taken
