@@ -1,8 +1,8 @@
 #version 330 core
 // SPDX-License-Identifier: MIT
-// One camera-facing quad per ball (instanced, one draw call for all balls); ball.frag
+// One camera-facing triangle per ball (instanced, one draw call for all balls); ball.frag
 // ray-casts the sphere inside it. A ball is never drawn smaller than minPixels on screen.
-layout(location = 0) in vec2 corner; // (+-1, +-1)
+layout(location = 0) in vec2 corner; // of the triangle around the unit circle
 layout(location = 1) in vec3 centre; // per ball, world
 layout(location = 2) in vec4 colour; // per ball
 
@@ -13,7 +13,7 @@ uniform float minPixels;     // smallest drawn radius, in pixels
 uniform float pixelsPerUnit; // pixels per world unit at unit distance
 uniform int selected;        // index of the selected ball, -1 for none
 
-out vec3 rayPoint;           // view-space point on the quad
+out vec3 rayPoint;           // view-space point on the triangle
 flat out vec3 sphereCentre;  // view space
 flat out float sphereRadius;
 flat out float ringRadius;   // the selection ring's outer radius (= sphereRadius when not selected)
@@ -39,12 +39,13 @@ void main()
         return;
     }
     // Seen from distance d, a sphere of radius R has, in the plane through its centre
-    // facing the eye, an outline of radius R d / sqrt(d^2 - R^2): the quad covers it.
-    float halfSide = outer * dist / sqrt(dist * dist - outer * outer);
+    // facing the eye, an outline of radius R d / sqrt(d^2 - R^2): the triangle around a
+    // circle of that radius covers it.
+    float outline = outer * dist / sqrt(dist * dist - outer * outer);
     vec3 forward = c / dist;
     vec3 side = abs(forward.y) < 0.99 ? cross(forward, vec3(0.0, 1.0, 0.0)) : cross(forward, vec3(1.0, 0.0, 0.0));
     vec3 right = normalize(side);
     vec3 up = cross(right, forward);
-    rayPoint = c + (corner.x * right + corner.y * up) * halfSide;
+    rayPoint = c + (corner.x * right + corner.y * up) * outline;
     gl_Position = projection * vec4(rayPoint, 1.0);
 }

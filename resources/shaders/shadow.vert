@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 // A soft dark disc on the floor under each ball (instanced): strong when the ball is
 // close to the floor, fading with height, so contact reads at a glance.
-layout(location = 0) in vec2 corner;
+layout(location = 0) in vec2 corner; // of the triangle around the unit circle
 layout(location = 1) in vec3 centre;
 
 uniform mat4 view;
