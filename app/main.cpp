@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QIcon>
 #include <QLocale>
@@ -21,7 +22,9 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
+#include <string>
 #include <unistd.h>
 #include <vector>
 
@@ -49,11 +52,17 @@ double drawingCpuSeconds()
 }
 
 // --measure-frames: plays with the turntable on (so every frame is drawn anew) and on
-// through the health check's pauses, then prints the frame times and quits. The run's own options come from --scene and
-// --set.
+// through the health check's pauses, then prints the frame times and quits. The frames of
+// the first half second (shaders compiled, buffers made, the window mapped) are reported
+// apart as the start-up; the figures are those of the playing that follows, with the
+// moments of its longest intervals. The run's own options come from --scene and --set.
 void measureFrames(ab::ui::MainWindow& window, double seconds)
 {
-    auto* samples = new std::vector<std::pair<double, double>>;
+    struct Sample {
+        double at, paint, interval; // seconds since play, milliseconds, milliseconds
+    };
+    auto* samples = new std::vector<Sample>;
+    auto* clock = new QElapsedTimer;
     ab::ui::BallView* view = window.view();
     if (!view) {
         std::fprintf(
@@ -62,9 +71,11 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
         QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
         return;
     }
-    QObject::connect(view, &ab::ui::BallView::framePainted, view,
-                     [samples](double paint, double interval) { samples->emplace_back(paint, interval); });
+    QObject::connect(view, &ab::ui::BallView::framePainted, view, [samples, clock](double paint, double interval) {
+        samples->push_back({double(clock->nsecsElapsed()) / 1e9, paint, interval});
+    });
     window.setTurntable(true);
+    clock->start();
     window.controller().play();
     // A measurement plays on through the health check's pauses (it still reports them).
     QObject::connect(&window.controller(), &ab::ui::RunController::playingChanged, &window, [&window](bool playing) {
@@ -72,28 +83,50 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
             window.controller().play();
     });
     const double cpuStart = drawingCpuSeconds();
-    QTimer::singleShot(int(seconds * 1000), qApp, [samples, &window, cpuStart] {
+    QTimer::singleShot(int(seconds * 1000), qApp, [samples, clock, &window, cpuStart] {
+        constexpr double startUp = 0.5; // seconds from the first frame
         const double cpu = drawingCpuSeconds() - cpuStart;
-        auto& s = *samples;
-        if (s.size() > 2)
-            s.erase(s.begin(), s.begin() + 2); // the first frames include start-up
+        const std::size_t frames = samples->size();
+        const double firstAt = samples->empty() ? 0.0 : samples->front().at;
+        std::vector<Sample> playing, first;
+        for (const Sample& s : *samples)
+            (s.at - firstAt < startUp ? first : playing).push_back(s);
         std::vector<double> paint, interval;
-        for (auto [p, i] : s) {
-            paint.push_back(p);
-            interval.push_back(i);
+        for (const Sample& s : playing) {
+            paint.push_back(s.paint);
+            interval.push_back(s.interval);
         }
         std::sort(paint.begin(), paint.end());
         std::sort(interval.begin(), interval.end());
-        auto pct = [](const std::vector<double>& v, double q) {
-            return v.empty() ? 0.0 : v[std::size_t(q * (v.size() - 1))];
+        // Fixed decimals whatever the locale (printf's follow LC_NUMERIC, which Qt sets).
+        auto ms = [](double x, int decimals = 1) {
+            char text[32];
+            const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::fixed, decimals).ptr;
+            return std::string(text, end);
         };
+        auto pct = [&](const std::vector<double>& v, double q) {
+            return ms(v.empty() ? 0.0 : v[std::size_t(q * double(v.size() - 1))]);
+        };
+        double firstLongest = 0.0;
+        for (const Sample& s : first)
+            firstLongest = std::max(firstLongest, s.interval);
+        std::sort(playing.begin(), playing.end(),
+                  [](const Sample& a, const Sample& b) { return a.interval > b.interval; });
+        std::string longest;
+        for (std::size_t k = 0; k < std::min<std::size_t>(3, playing.size()); ++k)
+            longest += (k ? ", " : "") + ms(playing[k].interval) + " ms at " + ms(playing[k].at - firstAt, 2) + " s";
         const auto st = window.controller().status();
-        std::printf("frames %zu; paint ms: median %.1f p95 %.1f max %.1f; interval ms: median %.1f p95 %.1f max %.1f; "
-                    "drawing CPU per frame %.1f ms; simulation: %lld steps, step %.1f ms\n",
-                    s.size(), pct(paint, 0.5), pct(paint, 0.95), pct(paint, 1.0), pct(interval, 0.5),
-                    pct(interval, 0.95), pct(interval, 1.0), s.empty() ? 0.0 : 1e3 * cpu / double(s.size() + 2),
-                    st.steps, st.stepSeconds * 1e3);
+        const std::string line = "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) +
+                                 " p95 " + pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " +
+                                 pct(interval, 0.5) + " p95 " + pct(interval, 0.95) + " max " + pct(interval, 1.0) +
+                                 "; drawing CPU per frame " + ms(frames ? 1e3 * cpu / double(frames) : 0.0) +
+                                 " ms; simulation: " + std::to_string(st.steps) + " steps, step " +
+                                 ms(st.stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " +
+                                 ms(startUp) + " s of frames): " + std::to_string(first.size()) + " frames, longest " +
+                                 ms(firstLongest) + " ms\n";
+        std::fputs(line.c_str(), stdout);
         delete samples;
+        delete clock;
         QCoreApplication::quit();
     });
 }
