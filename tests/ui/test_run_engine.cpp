@@ -9,6 +9,7 @@
 #include "ui/sim/run_engine.h"
 
 #include "tests/support/sim_helpers.h"
+#include "tests/support/window_helpers.h"
 
 #include <QSlider>
 #include <QStatusBar>
@@ -151,14 +152,9 @@ private slots:
         ab::ui::MainWindow w;
         w.show();
         w.showScene(SceneId::Bounce1d);
-        for (int i = 0; i < 100; ++i)
-            w.controller().stepOnce();
-        QTRY_COMPARE(w.controller().status().steps, 100LL);
-        w.controller().poll();
-        QSlider* time = w.transport()->timeSlider();
-        time->setValue(time->maximum() * 3 / 10); // stage 1 counts steps: about t = 30
-        QVERIFY(w.transport()->viewTime().has_value());
-        const double looked = *w.transport()->viewTime();
+        const std::optional<double> shown = testing::stepThenLookBack(w, 100, 3, 10); // stage 1 counts steps: t = 30
+        QVERIFY(shown.has_value());
+        const double looked = *shown;
         QTest::keyClick(&w, Qt::Key_Right);
         // The frame shown is the last one at or before the slider's time: step floor(t).
         const auto expected = static_cast<long long>(std::floor(looked)) + 1;

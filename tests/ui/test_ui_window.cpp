@@ -12,6 +12,7 @@
 #include "ui/panels/transport_bar.h"
 
 #include "tests/support/sim_helpers.h"
+#include "tests/support/window_helpers.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -275,14 +276,10 @@ private slots:
         MainWindow w;
         w.show();
         w.showScene(SceneId::Bounce1d);
-        for (int i = 0; i < 100; ++i)
-            w.controller().stepOnce();
-        QTRY_COMPARE(w.controller().status().steps, 100LL);
-        w.controller().poll();
+        const std::optional<double> shown = testing::stepThenLookBack(w, 100, 1, 2);
+        QVERIFY(shown.has_value());
+        QVERIFY(std::abs(*shown - 50.0) < 0.1);
         QSlider* time = w.transport()->timeSlider();
-        time->setValue(time->maximum() / 2);
-        QVERIFY(w.transport()->viewTime().has_value());
-        QVERIFY(std::abs(*w.transport()->viewTime() - 50.0) < 0.1);
         const QList<QPointF> cursor = w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points();
         QCOMPARE(cursor.size(), 2);
         QVERIFY(std::abs(cursor[0].x() - 50.0) < 0.1);
