@@ -132,6 +132,7 @@ struct HealthCheck::Impl {
     double energyScale = 0.0;
     HealthFigures fig;
     std::vector<HealthStatus> issues;
+    std::vector<Kind> issueKinds; // of each issue
     std::array<std::array<bool, 3>, static_cast<std::size_t>(Kind::Count)> seen{};
     std::vector<char> escapedBall;
     Health level = Health::Ok; // of the step being checked
@@ -201,6 +202,7 @@ struct HealthCheck::Impl {
         HealthStatus status{h, {}, {}, t};
         describe(status.what, status.advice);
         issues.push_back(std::move(status));
+        issueKinds.push_back(kind);
     }
 
     // What to change when the method itself misbehaves (energy, divergence).
@@ -551,6 +553,23 @@ HealthCheck::HealthCheck(const Simulation& sim, const State& start, int sampledA
 }
 
 HealthCheck::~HealthCheck() = default;
+HealthCheck::HealthCheck(HealthCheck&&) noexcept = default;
+HealthCheck& HealthCheck::operator=(HealthCheck&&) noexcept = default;
+
+void HealthCheck::keepFindings(const HealthCheck& earlier, double upTo)
+{
+    Impl& to = *impl_;
+    const Impl& from = *earlier.impl_;
+    for (std::size_t i = 0; i < from.issues.size(); ++i) {
+        const HealthStatus& status = from.issues[i];
+        bool& seen = to.seen[static_cast<std::size_t>(from.issueKinds[i])][static_cast<std::size_t>(status.level)];
+        if (status.t > upTo || seen)
+            continue;
+        seen = true;
+        to.issues.push_back(status);
+        to.issueKinds.push_back(from.issueKinds[i]);
+    }
+}
 
 Health HealthCheck::check(const State& before, const State& after)
 {

@@ -67,6 +67,13 @@ public:
     static constexpr int defaultSampledAbove = 100'000;
     HealthCheck(const Simulation& sim, const State& start, int sampledAbove = defaultSampledAbove);
     ~HealthCheck();
+    HealthCheck(HealthCheck&&) noexcept;
+    HealthCheck& operator=(HealthCheck&&) noexcept;
+
+    // Takes over `earlier`'s findings up to time `upTo`, before any of its own: a run that
+    // goes back to a state at `upTo` and checks its steps again from there keeps what its
+    // first pass found before that state (each kind still once).
+    void keepFindings(const HealthCheck& earlier, double upTo);
 
     // Checks the step from `before` to `after`, consecutive final states; returns the
     // worst level found in this step.

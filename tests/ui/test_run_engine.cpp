@@ -113,6 +113,24 @@ private slots:
         });
     }
 
+    void goingBackKeepsTheFindingsBeforeTheMomentShown()
+    {
+        // The report's stage 1 gains energy with every flight step (explicit Euler): a
+        // warning from the first steps on. Going back to step 50 keeps it, at its own time,
+        // and does not find it anew.
+        const ab::RunSpec spec = testing::spec(SceneId::Bounce1d);
+        RunEngine engine(ab::makeSimulation(spec), 1000, 0);
+        stepTo(engine, 100);
+        QCOMPARE(engine.status().health, ab::diagnostics::Health::Warning);
+        const std::string line = engine.status().healthLine;
+        QVERIFY(line.find("energy") != std::string::npos);
+        engine.resumeFrom(50);
+        QTRY_COMPARE(engine.status().steps, 50LL);
+        QCOMPARE(engine.status().health, ab::diagnostics::Health::Warning);
+        QCOMPARE(engine.status().healthLine, line);
+        QVERIFY(!engine.status().pausedOnHealth);
+    }
+
     void aRunWithoutHealthCheckingNeverPausesOnAFinding()
     {
         // Two balls at 10,000 m/s each way swap sides within one step: a failure that

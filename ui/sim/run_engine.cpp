@@ -333,8 +333,13 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     // state is final once the step from it is taken, as in takeStep.
     State cur = from.state, nxt, prev;
     bool havePrev = false;
-    if (health_)
-        health_.emplace(*sim_, sim_->start(), kPairsSampledAbove);
+    if (health_) {
+        // A check from the start, holding what the first pass found up to the keyframe:
+        // the steps from there are checked again below.
+        diagnostics::HealthCheck again(*sim_, sim_->start(), kPairsSampledAbove);
+        again.keepFindings(*health_, from.state.t);
+        *health_ = std::move(again);
+    }
     std::string failure;
     try {
         for (long long step = from.step; step < target; ++step) {
