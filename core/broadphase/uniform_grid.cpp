@@ -149,7 +149,7 @@ __attribute__((target("avx2"))) inline __m256 twoWindows(const float* f, std::ui
     return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f + lo)), _mm_loadu_ps(f + hi), 1);
 }
 
-// Eight all-ones lanes then eight zero lanes: the 4 lanes loaded from kLanes + 4 - l (as
+// Four all-ones lanes then eight zero lanes: the 4 lanes loaded from kLanes + 4 - l (as
 // int32) are all ones in their first min(l, 4) places.
 alignas(32) constexpr std::int32_t kLanes[12] = {-1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0};
 
@@ -268,9 +268,7 @@ __attribute__((target("avx2"))) void runningSumsAvx2(std::uint32_t* c, std::size
     }
     runningSums(c + k, count - k, static_cast<std::uint32_t>(_mm256_cvtsi256_si32(total)));
 }
-#endif
 
-#if defined(AB_AVX2_KERNEL)
 // GridGeometry::coord of four values: (x - lo) scale clamped to [0, top], truncated.
 // _mm256_max_pd(u, 0) returns its second operand when u is NaN, so NaN falls in cell 0
 // as in coord; for every other u the two agree with std::max(0, u) and std::min(., top).
@@ -280,12 +278,13 @@ __attribute__((target("avx2"))) inline __m128i fourCoords(const double* x, __m25
     return _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(u, _mm256_setzero_pd()), top));
 }
 
-// Placer::operator() for balls [begin, end), four at a time, the rest one by one. Slabs
-// change rarely along the engine's order (by cell), so four balls of one slab are counted
-// with one addition.
-__attribute__((target("avx2"))) void placeRunAvx2(const GridGeometry& geo, const std::uint8_t* slabOfLayer,
-                                                  std::uint32_t* cell, std::uint8_t* slab, std::uint32_t* count,
-                                                  int begin, int end, const double* x, const double* y, const double* z)
+// Placer::operator() for balls [begin, end) four at a time, as far as whole fours go;
+// returns where it stopped. Slabs change rarely along the engine's order (by cell), so
+// four balls of one slab are counted with one addition.
+__attribute__((target("avx2"))) int placeFoursAvx2(const GridGeometry& geo, const std::uint8_t* slabOfLayer,
+                                                   std::uint32_t* cell, std::uint8_t* slab, std::uint32_t* count,
+                                                   int begin, int end, const double* x, const double* y,
+                                                   const double* z)
 {
     const __m256d lo = _mm256_set1_pd(geo.lo()), scale = _mm256_set1_pd(geo.scale()), top = _mm256_set1_pd(geo.top());
     const __m128i one = _mm_set1_epi32(1);
@@ -309,13 +308,7 @@ __attribute__((target("avx2"))) void placeRunAvx2(const GridGeometry& geo, const
                 ++count[k];
         }
     }
-    for (; i < end; ++i) {
-        const int iz = geo.coord(z[i]);
-        const std::uint8_t s = slabOfLayer[iz];
-        cell[i] = geo.cell(geo.coord(x[i]), geo.coord(y[i]), iz);
-        slab[i] = s;
-        ++count[s];
-    }
+    return i;
 }
 #endif
 
@@ -370,10 +363,8 @@ UniformGrid::Placer UniformGrid::placer(int block)
 void UniformGrid::Placer::placeRun(int begin, int end, const double* x, const double* y, const double* z) const
 {
 #if defined(AB_AVX2_KERNEL)
-    if (avx2_) {
-        placeRunAvx2(*geo_, slabOfLayer_, cell_, slab_, count_, begin, end, x, y, z);
-        return;
-    }
+    if (avx2_)
+        begin = placeFoursAvx2(*geo_, slabOfLayer_, cell_, slab_, count_, begin, end, x, y, z);
 #endif
     for (int i = begin; i < end; ++i)
         (*this)(i, x[i], y[i], z[i]);
@@ -408,13 +399,14 @@ void UniformGrid::sortSlab(int s, const double* x, const double* y, const double
     // Only the blocks that hold balls of this slab are read.
     const auto holds = [&](int b) { return blockCounts[static_cast<std::size_t>(b) * slabs + s] != 0; };
     const auto blockEnd = [&](int b) { return static_cast<std::size_t>(blockBegin(b + 1)); };
-    for (int b = 0; b < blockCount(); ++b)
+    for (int b = 0; b < blockCount(); ++b) {
         if (holds(b))
             for (std::size_t i = static_cast<std::size_t>(blockBegin(b)); i < blockEnd(b); ++i)
                 if (slabOf[i] == slab)
                     ++start[cellOf[i]];
-                    // Counts to end positions, then place from the last ball back: each cell keeps its
-                    // balls in index order and start[c] ends as the first position of cell c.
+    }
+    // Counts to end positions, then place from the last ball back: each cell keeps its
+    // balls in index order and start[c] ends as the first position of cell c.
 #if defined(AB_AVX2_KERNEL)
     if (kernel_ == Kernel::Avx2)
         runningSumsAvx2(start + c0, c1 - c0, slabBegin_[static_cast<std::size_t>(s)]);
@@ -444,11 +436,8 @@ void UniformGrid::sortSlab(int s, const double* x, const double* y, const double
 
 void UniformGrid::build(const double* x, const double* y, const double* z)
 {
-    for (int b = 0; b < blockCount(); ++b) {
-        const Placer place = placer(b);
-        for (int i = blockBegin(b); i < blockBegin(b + 1); ++i)
-            place(i, x[i], y[i], z[i]);
-    }
+    for (int b = 0; b < blockCount(); ++b)
+        placer(b).placeRun(blockBegin(b), blockBegin(b + 1), x, y, z);
     countSlabs();
     for (int s = 0; s < slabCount(); ++s)
         sortSlab(s, x, y, z);
@@ -503,7 +492,7 @@ UniformGrid::Kernel UniformGrid::bestKernel()
 void UniformGrid::setKernel(Kernel kernel)
 {
     if (!runs(kernel))
-        throw std::invalid_argument("grid: this processor does not run the chosen pair-search kernel");
+        throw std::invalid_argument("grid: this processor does not run the chosen kernel");
     kernel_ = kernel;
 }
 

@@ -53,7 +53,8 @@ public:
     // Whether this processor runs `kernel`; the best one that it runs.
     static bool runs(Kernel kernel);
     static Kernel bestKernel();
-    // The kernel sortSlab and findPairs use: bestKernel() unless set (tests compare them).
+    // The kernel of the placing, sortSlab and findPairs: bestKernel() unless set (tests
+    // compare them).
     void setKernel(Kernel kernel);
     Kernel kernel() const { return kernel_; }
 

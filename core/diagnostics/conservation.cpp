@@ -25,8 +25,8 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
     g_ = spec.params.real("g");
     // Stage 4's box is centred at the origin (Appendix D): its floor is y = -L/2.
     floor_ = spec.scene == SceneId::ManyBalls ? -spec.params.real("box") / 2.0 : 0.0;
-    if (const auto* physical = dynamic_cast<const physical::PhysicalSimulation*>(&sim)) {
-        world_ = &physical->world();
+    world_ = physical::worldOf(sim);
+    if (world_) {
         mass_ = world_->mass;
     } else if (spec.model == ModelKind::Physical && spec.scene == SceneId::Bounce1d &&
                physical::contactLawOf(spec) != physical::ContactLaw::Impulse) {

@@ -158,8 +158,8 @@ struct HealthCheck::Impl {
             spring = physical::springFloorFor(spec);
         }
         // The spring floor's energies stay per unit mass: its allowance below takes them so.
-        if (const auto* physical = dynamic_cast<const physical::PhysicalSimulation*>(&s); physical && !spring)
-            mass = physical->world().mass;
+        if (const physical::World* world = physical::worldOf(s); world && !spring)
+            mass = world->mass;
         e0 = energy(start);
         // Gains are relative to the start energy, or to that of the balls raised by the
         // scene's size when the start holds less (a ball at rest on the floor).

@@ -51,6 +51,14 @@ private:
     std::vector<Impact>* log_ = nullptr;
 };
 
+// The World of a physical simulation (its masses, walls, contact constants); nullptr for
+// any other simulation (the report's, many-balls', the spring floor's).
+inline const World* worldOf(const Simulation& sim)
+{
+    const auto* physical = dynamic_cast<const PhysicalSimulation*>(&sim);
+    return physical ? &physical->world() : nullptr;
+}
+
 // Validates the integrator and impact mode for the physical model and the start state
 // against the world (every centre on the free side of every wall, pairs at least 2 r
 // apart; InputError naming `where`, e.g. "p1" or "--init"), then builds the simulation.

@@ -108,7 +108,7 @@ bool ChartPanel::chartShown(ChartKind kind) const
 void ChartPanel::showTrack(const MotionTrack& track)
 {
     for (std::size_t i = 0; i < charts_.size(); ++i)
-        charts_[i]->showTrack(track, std::max(views_[i]->width(), 200));
+        charts_[i]->showTrack(track, columns(i));
 }
 
 void ChartPanel::setCursorTime(std::optional<double> t)
@@ -132,7 +132,12 @@ void ChartPanel::setComparison(const QString& mainName, const QString& compareNa
 void ChartPanel::showComparisonTrack(const MotionTrack& track)
 {
     for (std::size_t i = 0; i < charts_.size(); ++i)
-        charts_[i]->showComparisonTrack(track, std::max(views_[i]->width(), 200));
+        charts_[i]->showComparisonTrack(track, columns(i));
+}
+
+int ChartPanel::columns(std::size_t slot) const
+{
+    return std::max(views_[slot]->width(), 200); // a point a pixel column, 200 at least
 }
 
 bool ChartPanel::refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
@@ -140,7 +145,7 @@ bool ChartPanel::refreshSlot(std::size_t slot, const MotionTrack& track, const M
 {
     if (slot >= kinds || !views_[slot] || views_[slot]->isHidden())
         return false;
-    const int width = std::max(views_[slot]->width(), 200);
+    const int width = columns(slot);
     charts_[slot]->showTrack(track, width);
     if (comparison)
         charts_[slot]->showComparisonTrack(*comparison, width);

@@ -59,6 +59,8 @@ protected:
 
 private:
     static constexpr std::size_t kinds = kSlots;
+    // How many points a track is thinned to for the chart in `slot`.
+    int columns(std::size_t slot) const;
     std::array<MotionChart*, kinds> charts_{};
     std::array<QChartView*, kinds> views_{};
     std::array<bool, kinds> applies_{};

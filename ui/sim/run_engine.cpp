@@ -275,12 +275,19 @@ bool RunEngine::checkHealth()
     if (!health_ || !havePrevious_)
         return false; // no check, or the start: nothing to compare with yet
     health_->check(previous_, state_);
-    std::size_t failures = 0;
-    for (const diagnostics::HealthStatus& s : health_->issues())
-        failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+    const std::size_t failures = failuresFound();
     const bool grew = failures > failuresSeen_;
     failuresSeen_ = failures;
     return grew;
+}
+
+std::size_t RunEngine::failuresFound() const
+{
+    std::size_t failures = 0;
+    if (health_)
+        for (const diagnostics::HealthStatus& s : health_->issues())
+            failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+    return failures;
 }
 
 void RunEngine::publishHealth()
@@ -353,10 +360,7 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     } catch (const std::exception& e) { // these steps were taken before: only memory can fail
         failure = std::string("going back failed: ") + e.what();
     }
-    std::size_t failures = 0;
-    if (health_)
-        for (const diagnostics::HealthStatus& s : health_->issues())
-            failures += s.level == diagnostics::Health::Failed ? 1 : 0;
+    const std::size_t failures = failuresFound();
 
     lock.lock();
     if (!failure.empty()) {

@@ -112,6 +112,8 @@ private:
     // of step status_.steps, into the shared snapshot.
     void publishHealth();
     void publishCurrent();
+    // Failures among the health check's findings (0 without a check).
+    std::size_t failuresFound() const;
     void finish(std::string warning);
 
     std::unique_ptr<Simulation> sim_;

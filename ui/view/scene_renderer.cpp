@@ -191,11 +191,7 @@ void SceneRenderer::draw(const RenderInputs& in)
     drawFlat(in); // floor and lines
 
     if (balls_ > 0) {
-        setCommonUniforms(*ballProgram_, in);
-        ballProgram_->setUniformValue("selected", in.selected);
-        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
-        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
-        ballProgram_->setUniformValue("ghost", 0);
+        useBallProgram(in, in.selected, false);
         ballVao_.bind();
         glDrawArraysInstanced(GL_TRIANGLES, 0, cornerCount, balls_); // every ball in one call
 
@@ -217,11 +213,7 @@ void SceneRenderer::draw(const RenderInputs& in)
     if (ghosts_ > 0) {
         // After the solid balls, blended and without writing depth: a ghost in front of a
         // ball tints it, one behind it is hidden by it, and ghosts never hide each other.
-        setCommonUniforms(*ballProgram_, in);
-        ballProgram_->setUniformValue("selected", -1);
-        ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
-        ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
-        ballProgram_->setUniformValue("ghost", 1);
+        useBallProgram(in, -1, true);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
@@ -248,6 +240,15 @@ void SceneRenderer::draw(const RenderInputs& in)
     }
     flatVao_.release();
     flatProgram_->release();
+}
+
+void SceneRenderer::useBallProgram(const RenderInputs& in, int selected, bool ghosts)
+{
+    setCommonUniforms(*ballProgram_, in);
+    ballProgram_->setUniformValue("selected", selected);
+    ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
+    ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
+    ballProgram_->setUniformValue("ghost", ghosts ? 1 : 0);
 }
 
 void SceneRenderer::drawFlat(const RenderInputs& in)

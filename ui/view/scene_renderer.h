@@ -60,6 +60,8 @@ private:
     void setupInstanced(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& centres, bool withColours);
     void setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buffer);
     void setCommonUniforms(QOpenGLShaderProgram& program, const RenderInputs& in);
+    // The ball program with its uniforms: the solid balls (`selected` ringed) or the ghosts.
+    void useBallProgram(const RenderInputs& in, int selected, bool ghosts);
     void drawFlat(const RenderInputs& in);
 
     bool ready_ = false;
