@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+// The window's widgets and menus: built once, in the constructor.
+#include "main_window.h"
+
+#include "about_box.h"
+#include "figures/figure_actions.h"
+#include "i18n/core_text.h"
+#include "panels/parameter_panel.h"
+#include "panels/stage_navigator.h"
+#include "panels/status_readout.h"
+#include "panels/transport_bar.h"
+#include "presets/preset_actions.h"
+#include "tools/tools_menu.h"
+#include "view/ball_view.h"
+
+#include <QGuiApplication>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace ab::ui {
+
+void MainWindow::buildLayout()
+{
+    transport_ = new TransportBar;
+    auto* bar = addToolBar(tr("Transport"));
+    bar->setObjectName("transportToolBar");
+    bar->setMovable(false);
+    bar->addWidget(transport_);
+
+    charts_ = new ChartPanel;
+    auto* splitter = new QSplitter(Qt::Horizontal);
+    splitter->addWidget(buildLeftPanel());
+    splitter->addWidget(buildViewArea());
+    splitter->addWidget(charts_);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 3);
+    splitter->setStretchFactor(2, 2);
+    splitter->setSizes({340, 640, 480});
+    setCentralWidget(splitter);
+    readout_ = new StatusReadout(statusBar());
+    readout_->setFrameRate(view_ ? 0.0 : -1.0);
+
+    // Play or Step while looking back forks the run at the moment shown (issue: step
+    // back); Pause keeps the moment in view.
+    connect(transport_, &TransportBar::playToggled, this, [this] {
+        if (controller_.playing()) {
+            controller_.pause();
+            return;
+        }
+        resumeFromLookedBackMoment();
+        controller_.play();
+    });
+    connect(transport_, &TransportBar::stepRequested, this, [this] {
+        resumeFromLookedBackMoment();
+        controller_.stepOnce();
+    });
+    connect(transport_, &TransportBar::resetRequested, &controller_, &RunController::reset);
+    connect(transport_, &TransportBar::speedRequested, &controller_, &RunController::setSpeed);
+    connect(transport_, &TransportBar::viewTimeChanged, this, &MainWindow::refresh);
+    connect(charts_, &ChartPanel::ballRequested, &controller_, &RunController::selectBall);
+    connect(charts_, &ChartPanel::exportRequested, this, &MainWindow::exportInteractively);
+}
+
+QWidget* MainWindow::buildLeftPanel()
+{
+    navigator_ = new StageNavigator;
+    connect(navigator_, &StageNavigator::sceneRequested, this, &MainWindow::showScene);
+
+    auto* settings = new QWidget;
+    auto* layout = new QVBoxLayout(settings);
+    auto* runTitle = new QLabel(tr("<b>Run</b>"));
+    runOptions_ = new RunOptionsPanel;
+    auto* paramTitle = new QLabel(tr("<b>Constants</b> (hover for the equation)"));
+    parameters_ = new ParameterPanel;
+    layout->addWidget(runTitle);
+    layout->addWidget(runOptions_);
+    layout->addSpacing(6);
+    layout->addWidget(paramTitle);
+    layout->addWidget(parameters_);
+    layout->addStretch(1);
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(settings);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    connect(parameters_, &ParameterPanel::valuesProposed, this, &MainWindow::applyValues);
+    connect(runOptions_, &RunOptionsPanel::optionsProposed, this, &MainWindow::applyOptions);
+
+    auto* left = new QSplitter(Qt::Vertical);
+    left->addWidget(navigator_);
+    left->addWidget(scroll);
+    left->setStretchFactor(0, 1);
+    left->setStretchFactor(1, 1);
+    left->setMinimumWidth(300);
+    return left;
+}
+
+QWidget* MainWindow::buildViewArea()
+{
+    if (BallView::available()) {
+        view_ = new BallView; // owned by its container
+        connect(view_, &BallView::ballPicked, &controller_, &RunController::selectBall);
+        connect(view_, &BallView::keysReleased, this, [this] {
+            activateWindow();
+            transport_->setFocus();
+        });
+        connect(view_, &BallView::framePainted, this, [this](double, double) { ++framesSinceFps_; });
+        return view_->container();
+    }
+    // No OpenGL windows on this platform (offscreen, minimal): say so where the view would be.
+    placeholder_ = new QLabel(tr("The 3D view needs OpenGL, which the '%1' platform does not offer.\n"
+                                 "Charts, constants and the run work as usual.")
+                                  .arg(QGuiApplication::platformName()));
+    placeholder_->setObjectName("viewPlaceholder");
+    placeholder_->setAlignment(Qt::AlignCenter);
+    placeholder_->setWordWrap(true);
+    placeholder_->setMinimumSize(320, 240);
+    return placeholder_;
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    presets_ = new PresetActions(this);
+    presets_->addFileActions(file);
+    file->addAction(tr("Export current chart..."), QKeySequence(tr("Ctrl+E")), this,
+                    [this] { exportInteractively(charts_->currentChart(), ExportFormat::Png); });
+    QMenu* charts = file->addMenu(tr("Export chart"));
+    for (ChartKind kind : allChartKinds())
+        charts->addAction(tr("%1 chart...").arg(QString::fromLatin1(chartKey(kind).data())), this,
+                          [this, kind] { exportInteractively(kind, ExportFormat::Png); });
+    file->addAction(tr("Export chart data as CSV..."), QKeySequence(tr("Ctrl+Shift+E")), this,
+                    [this] { exportInteractively(charts_->currentChart(), ExportFormat::Csv); });
+    QAction* viewPng = file->addAction(tr("Export 3D view as PNG..."), this, [this] { exportViewInteractively(); });
+    viewPng->setEnabled(view_ != nullptr);
+    file->addSeparator();
+    file->addAction(tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* run = menuBar()->addMenu(tr("&Run"));
+    run->addAction(tr("Play / pause"), QKeySequence(Qt::Key_Space), transport_, &TransportBar::playToggled);
+    run->addAction(tr("One step"), QKeySequence(Qt::Key_Right), transport_, &TransportBar::stepRequested);
+    run->addAction(tr("Reset"), QKeySequence(Qt::Key_R), &controller_, &RunController::reset);
+    run->addAction(tr("Slower"), QKeySequence(Qt::Key_BracketLeft), this,
+                   [this] { controller_.setSpeed(controller_.speed() / 1.5); });
+    run->addAction(tr("Faster"), QKeySequence(Qt::Key_BracketRight), this,
+                   [this] { controller_.setSpeed(controller_.speed() * 1.5); });
+
+    QMenu* stage = menuBar()->addMenu(tr("&Stage"));
+    for (const SceneInfo* s : allScenes()) {
+        const SceneId id = s->id;
+        stage->addAction(tr("%1  %2").arg(s->stage).arg(coreText(s->title)), QKeySequence(Qt::Key_0 + s->stage), this,
+                         [this, id] { showScene(id); });
+    }
+    stage->addSeparator();
+    stage->addAction(tr("Previous stage"), QKeySequence(Qt::Key_PageUp), navigator_, &StageNavigator::previous);
+    stage->addAction(tr("Next stage"), QKeySequence(Qt::Key_PageDown), navigator_, &StageNavigator::next);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName("viewMenu"); // the lecture and theme items join it (ui/shell/)
+    QAction* reset = view->addAction(tr("Reset view"), QKeySequence(Qt::Key_Home), this, [this] {
+        if (view_)
+            view_->resetView();
+    });
+    QAction* turn =
+        view->addAction(tr("Turntable"), QKeySequence(Qt::Key_T), this, [this](bool on) { setTurntable(on); });
+    turn->setCheckable(true);
+    reset->setEnabled(view_ != nullptr);
+    turn->setEnabled(view_ != nullptr);
+    presets_->addChartToggles(view);
+
+    presets_->addPresetsMenu(menuBar());
+    figures_ = new FigureActions(this);
+    figures_->addFiguresMenu(menuBar());
+
+    addToolsMenu(this, [this] { return controller_.spec(); });
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName("helpMenu");
+    help->addAction(tr("Keys and mouse"), QKeySequence::HelpContents, this, &MainWindow::showKeys);
+    help->addAction(tr("About Amazeballs"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::showKeys()
+{
+    QMessageBox::information(
+        this, tr("Keys and mouse"),
+        tr("<table>"
+           "<tr><td><b>Space</b></td><td>play / pause</td></tr>"
+           "<tr><td><b>Right</b></td><td>one step</td></tr>"
+           "<tr><td><b>R</b></td><td>reset the run</td></tr>"
+           "<tr><td><b>[ ]</b></td><td>slower / faster</td></tr>"
+           "<tr><td><b>1 - 4</b></td><td>the report's stages; PgUp / PgDn: previous / next</td></tr>"
+           "<tr><td><b>Ctrl+E</b></td><td>export the current chart (Ctrl+Shift+E: its data as CSV)</td></tr>"
+           "<tr><td><b>Home</b></td><td>reset the 3D view; T: turntable</td></tr>"
+           "<tr><td colspan=2><br><b>3D view</b>: left drag orbits, right or middle drag (or Shift+left) pans, "
+           "the wheel zooms, a click selects a ball, a double click on empty space resets the view. "
+           "After a click in the view the arrow keys move the camera as in the report's WebGL program; "
+           "Esc gives them back to the transport.</td></tr></table>"));
+}
+
+void MainWindow::showAbout()
+{
+    showAboutBox(this);
+}
+
+} // namespace ab::ui

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// The window follows its run: the 3D view every new state, the panels (charts, slider,
+// readings) four times a second while playing, spread over frames a part at a time.
+#include "main_window.h"
+
+#include "i18n/core_text.h"
+#include "panels/status_readout.h"
+#include "panels/transport_bar.h"
+#include "view/ball_view.h"
+
+#include <algorithm>
+
+namespace ab::ui {
+
+namespace {
+
+constexpr int maxTracePoints = 20000;
+
+} // namespace
+
+void MainWindow::refresh()
+{
+    if (!controller_.hasRun())
+        return;
+    const EngineStatus status = controller_.status();
+    const std::optional<double> viewT = transport_->viewTime();
+    controller_.engine().read([&](const Recording& rec, const Frame& current) { refreshView(rec, current, viewT); });
+    if (const RunEngine* compare = controller_.comparisonEngine()) {
+        compare->read([&](const Recording& rec, const Frame& current) {
+            if (view_) { // the comparison at the moment shown: it never runs ahead of the main run
+                const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
+                view_->setGhosts((shown ? shown : &current)->p, view_->ghostLegend());
+            }
+        });
+    }
+    // The 3D view follows every new state. The panels redraw four times a second while
+    // playing: with a GL view in the window every widget redraw recomposes the whole
+    // window, which software OpenGL pays for in the frame it lands in, so their refresh
+    // is spread over the next frames, a chart at a time. The moment play stops is spread
+    // too (it is still part of playback: the run ending under a lecturer's eyes); any
+    // other change of a stopped run (a scrub, a new selection) redraws them at once.
+    const bool stopping = panelsPlaying_ && !status.playing;
+    const bool spread = status.playing || stopping;
+    panelsPlaying_ = status.playing;
+    if (!spread) {
+        cancelPanelRefresh();
+        refreshPanels();
+        return;
+    }
+    const bool due = stopping || !panelClock_.isValid() || panelClock_.elapsed() >= 250;
+    if (!due || (panelPart_ >= 0 && !stopping))
+        return;
+    panelClock_.restart();
+    panelPart_ = 0; // from the first chart again, with what is recorded now
+    panelTimer_.start();
+}
+
+void MainWindow::cancelPanelRefresh()
+{
+    panelTimer_.stop();
+    panelPart_ = -1;
+}
+
+void MainWindow::refreshPanels()
+{
+    const EngineStatus status = controller_.status();
+    const std::optional<double> viewT = transport_->viewTime();
+    controller_.engine().read([&](const Recording& rec, const Frame&) { charts_->showTrack(rec.track()); });
+    if (const RunEngine* compare = controller_.comparisonEngine())
+        compare->read([&](const Recording& rec, const Frame&) { charts_->showComparisonTrack(rec.track()); });
+    panelClock_.restart();
+    charts_->setCursorTime(viewT ? viewT : std::optional<double>(status.t));
+    refreshReadings(status);
+}
+
+void MainWindow::refreshPanelPart()
+{
+    if (!controller_.hasRun() || panelPart_ < 0) {
+        cancelPanelRefresh();
+        return;
+    }
+    const EngineStatus status = controller_.status();
+    const std::optional<double> viewT = transport_->viewTime();
+    const std::optional<double> cursor = viewT ? viewT : std::optional<double>(status.t);
+    // The next shown chart; hidden ones take no tick.
+    while (static_cast<std::size_t>(panelPart_) < ChartPanel::kSlots) {
+        const auto slot = static_cast<std::size_t>(panelPart_++);
+        bool drawn = false;
+        controller_.engine().read([&](const Recording& rec, const Frame&) {
+            if (const RunEngine* compare = controller_.comparisonEngine())
+                compare->read([&](const Recording& other, const Frame&) {
+                    drawn = charts_->refreshSlot(slot, rec.track(), &other.track(), cursor);
+                });
+            else
+                drawn = charts_->refreshSlot(slot, rec.track(), nullptr, cursor);
+        });
+        if (drawn)
+            return;
+    }
+    refreshReadings(status); // the last part: slider and readings
+    cancelPanelRefresh();
+}
+
+void MainWindow::refreshReadings(const EngineStatus& status)
+{
+    double start = status.t;
+    controller_.engine().read([&](const Recording& rec, const Frame& current) {
+        start = rec.frames().empty() ? current.t : rec.frames().front().t;
+    });
+    transport_->setRecorded(start, status.t, coreText(sceneInfo(scene_).timeUnit));
+    readout_->show(status);
+    if (view_ && fpsClock_.elapsed() >= 1000) {
+        readout_->setFrameRate(1000.0 * framesSinceFps_ / double(fpsClock_.restart()));
+        framesSinceFps_ = 0;
+    }
+}
+
+void MainWindow::refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT)
+{
+    if (!view_)
+        return;
+    const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
+    if (!shown)
+        shown = &current;
+    view_->setBalls(shown->p);
+    if (controller_.layout().axes == 1) {
+        view_->setTrace({}); // the vertical scene's trace would hide the ball's own line
+        return;
+    }
+    // The selected ball's path so far (Figure 2.6), thinned to a drawable number of points.
+    const MotionTrack& track = rec.track();
+    const double until = viewT.value_or(current.t);
+    const auto end = std::upper_bound(track.t().begin(), track.t().end(), until) - track.t().begin();
+    const std::size_t n = static_cast<std::size_t>(end);
+    const std::size_t stride = std::max<std::size_t>(1, n / maxTracePoints);
+    std::vector<QVector3D> trace;
+    trace.reserve(n / stride + 2);
+    for (std::size_t i = 0; i < n; i += stride)
+        trace.emplace_back(float(track.p(0)[i]), float(track.p(1)[i]), float(track.p(2)[i]));
+    if (n > 0 && (n - 1) % stride != 0)
+        trace.emplace_back(float(track.p(0)[n - 1]), float(track.p(1)[n - 1]), float(track.p(2)[n - 1]));
+    view_->setTrace(std::move(trace));
+}
+
+} // namespace ab::ui
