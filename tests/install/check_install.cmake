@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # Installs the build into a fresh prefix and checks what a Linux desktop needs: the
 # programs in bin, the .desktop entry whose Exec and Icon name them, and the icon in the
-# hicolor theme. Run as: cmake -DBUILD_DIR=... -DPREFIX=... [-DVALIDATE=...] -P check_install.cmake
+# hicolor theme, and the AppStream metainfo that launches that entry and provides both
+# programs. Run as: cmake -DBUILD_DIR=... -DPREFIX=... [-DVALIDATE=...] -P check_install.cmake
 file(REMOVE_RECURSE "${PREFIX}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${PREFIX}"
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -30,10 +31,22 @@ if(NOT svg MATCHES "<svg")
   message(FATAL_ERROR "the installed icon is not an SVG image")
 endif()
 
+# Software centres read share/metainfo/<component id>.metainfo.xml.
+file(GLOB metainfo "${PREFIX}/share/metainfo/*.metainfo.xml")
+list(LENGTH metainfo count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "expected one AppStream metainfo in ${PREFIX}/share/metainfo, found ${count}")
+endif()
+file(READ "${metainfo}" xml)
+if(NOT xml MATCHES "<launchable type=\"desktop-id\">amazeballs.desktop</launchable>"
+   OR NOT xml MATCHES "<binary>amazeballs</binary>" OR NOT xml MATCHES "<binary>amazeballs-cli</binary>")
+  message(FATAL_ERROR "${metainfo} does not launch amazeballs.desktop and provide both programs")
+endif()
+
 if(VALIDATE)
   execute_process(COMMAND "${VALIDATE}" "${desktop}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(NOT rc EQUAL 0 OR out MATCHES "error")
     message(FATAL_ERROR "desktop-file-validate: ${out}")
   endif()
 endif()
-message(STATUS "installed: programs, desktop entry and icon in ${PREFIX}")
+message(STATUS "installed: programs, desktop entry, icon and metainfo in ${PREFIX}")
