@@ -37,6 +37,9 @@ if(AMAZEBALLS_BUILD_UI)
   install(FILES "${AMAZEBALLS_METAINFO}" DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
 endif()
 
+# The licence, where Debian policy puts it (machine-readable, DEP-5).
+install(FILES "${CMAKE_SOURCE_DIR}/resources/copyright" DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/amazeballs)
+
 # The Debian package: Depends comes from dpkg-shlibdeps (dpkg-dev) on the installed programs.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME amazeballs)
@@ -45,9 +48,9 @@ set(CPACK_PACKAGE_CONTACT "${AMAZEBALLS_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_HOMEPAGE_URL "${AMAZEBALLS_HOMEPAGE}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "bouncing and colliding balls, stage by stage, for teaching physics")
 set(CPACK_PACKAGE_DESCRIPTION
-    "Amazeballs rebuilds, stage by stage, the 2014 student report Amazeballs (Linköping
-University, course TNM085): one ball bouncing in one dimension, one ball in a
-box, two balls colliding, and a few hundred balls in a box. It runs the
+    "Amazeballs rebuilds the 2014 student report Amazeballs (Linköping University,
+course TNM085) stage by stage: one ball bouncing in one dimension, one ball in
+a box, two balls colliding, and a few hundred balls in a box. It runs the
 report's own rules exactly and puts textbook physics beside them, with charts,
 accuracy and stability studies and a lecture mode for a projector.
 

@@ -2,8 +2,9 @@
 # Makes the Debian package from the built tree with `cpack -G DEB` into a fresh folder and
 # reads it back with dpkg-deb: its control fields, that it holds exactly the files
 # `cmake --install` installs (so whatever install rule the tree gains is packaged too),
-# among them the programs, desktop entry, icon and metainfo, and that the packaged
-# amazeballs-cli runs.
+# among them the programs, desktop entry, icon, metainfo and copyright, and that the
+# packaged amazeballs-cli runs. cpack first brings the tree up to date (its preinstall
+# step), which on a built tree is only make's check.
 # Run as: cmake -DBUILD_DIR=... -DOUT=... -DVERSION=... -DMETAINFO_NAME=... -DCPACK=...
 #               -DDPKG_DEB=... -DDPKG=... -DOBJDUMP=... -P check_deb.cmake
 cmake_minimum_required(VERSION 3.22)
@@ -94,7 +95,8 @@ foreach(row IN LISTS rows)
   list(APPEND packaged "${path}")
 endforeach()
 foreach(f bin/amazeballs bin/amazeballs-cli share/applications/amazeballs.desktop
-          share/icons/hicolor/scalable/apps/amazeballs.svg share/metainfo/${METAINFO_NAME})
+          share/icons/hicolor/scalable/apps/amazeballs.svg share/metainfo/${METAINFO_NAME}
+          share/doc/amazeballs/copyright)
   if(NOT f IN_LIST packaged)
     message(FATAL_ERROR "${deb} lacks /usr/${f}; it holds:\n${listing}")
   endif()
