@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A rough ball resting on a supporting wall (the floor): Coulomb friction acts at its
-// contact point, continuously, and turns sliding into rolling (docs/spin.md, eqs S1-S8).
+// contact point, continuously, and turns sliding into rolling (docs/spin.md, eqs S1-S6).
 // With n the wall's inward normal, the contact point sits at -r n from the centre and
 // moves with the slip velocity
 //     u = v_t - r w x n                                             (S1)
