@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The changing state of a run: time, ball positions and velocities, and the little memory
+// The changing state of a run: time, ball positions, velocities and spins, and the little memory
 // the report's rules keep (bounce counters). The fixed description lives in the scene's
 // parameters; this is all a step reads and writes.
 #pragma once
@@ -18,6 +18,10 @@ struct State {
     double t = 0.0;
     Vec3Array p; // centres
     Vec3Array v; // velocities
+    // Angular velocities (rad per time unit, right-hand rule), 3 x N where the balls turn
+    // (the physical model of stages 1-3); empty (3 x 0) everywhere else, which reads as no
+    // spin and costs the N-ball scenes nothing.
+    Vec3Array w;
     // Per-ball contact counters (the report's stage 4 counts bounces per ball).
     std::vector<int> bounces;
     // One counter for the whole scene (the report's stages 1-3 share one `count`).
@@ -29,10 +33,14 @@ struct State {
     bool halted = false;
 
     int size() const { return static_cast<int>(p.cols()); }
+    bool spins() const { return w.cols() == p.cols() && w.cols() > 0; }
+    // Ball i's angular velocity; zero where the state has none.
+    Eigen::Vector3d spin(int i) const { return spins() ? Eigen::Vector3d(w.col(i)) : Eigen::Vector3d::Zero(); }
     void resize(int n)
     {
         p.setZero(3, n);
         v.setZero(3, n);
+        w.resize(3, 0);
         bounces.assign(static_cast<std::size_t>(n), 0);
     }
 };

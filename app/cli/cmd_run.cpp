@@ -8,6 +8,7 @@
 #include "../../core/diagnostics/health.h"
 #include "../../core/io/atomic_file.h"
 #include "../../core/io/trajectory_csv.h"
+#include "../../core/physical/physical_simulation.h"
 
 #include <ostream>
 
@@ -82,7 +83,8 @@ int reportHealth(const diagnostics::HealthCheck& health, bool diverged, const St
         return 0;
     err << "amazeballs-cli: run: " << diagnostics::healthKey(worst.level) << ": " << worst.line();
     if (diverged)
-        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " " << sim.scene().timeUnit;
+        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " "
+            << sim.scene().timeUnit;
     err << "\n";
     return diverged ? 3 : 0;
 }
@@ -105,11 +107,12 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err)
     State last; // the last state written: a non-finite one never is
     const State start = sim->start();
     diagnostics::HealthCheck health(*sim, start);
+    const bool spin = physical::hasRotation(*sim, start); // wx,wy,wz after the contract's columns
     bool diverged = false;
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
         if (csv)
-            writeTrajectoryHeader(*csv);
+            writeTrajectoryHeader(*csv, spin);
         runRecorded(
             *sim, start, setup.steps, 1,
             [&](const State& s) {
@@ -118,7 +121,7 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err)
                     return;
                 }
                 if (csv && index % every == 0)
-                    writeTrajectoryRows(*csv, s);
+                    writeTrajectoryRows(*csv, s, spin);
                 sum.observe(s, index);
                 last = s;
                 ++index;

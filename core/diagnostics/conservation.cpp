@@ -59,8 +59,8 @@ ConservationSample ConservationMeter::measureWorld(const State& s) const
 {
     // Few balls (one or two): the World's own energy, then momentum p = sum m v.
     ConservationSample out;
-    const physical::KineticPotential e = physical::energyParts(*world_, s.p, s.v);
-    out.energy.kinetic = e.kinetic;
+    const physical::KineticPotential e = physical::energyParts(*world_, s);
+    out.energy.kinetic = e.kinetic + e.rotational; // a turning ball's energy is kinetic too
     out.energy.potential = e.potential;
     const double moving2 = movingSpeed_ * movingSpeed_;
     for (int i = 0; i < s.size(); ++i) {

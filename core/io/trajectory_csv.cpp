@@ -11,12 +11,18 @@
 
 namespace ab {
 
-void writeTrajectoryHeader(std::ostream& out)
+namespace {
+
+constexpr const char* spinColumns = ",wx,wy,wz";
+
+} // namespace
+
+void writeTrajectoryHeader(std::ostream& out, bool spin)
 {
-    out << "t,ball,x,y,z,vx,vy,vz\n";
+    out << "t,ball,x,y,z,vx,vy,vz" << (spin ? spinColumns : "") << "\n";
 }
 
-void writeTrajectoryRows(std::ostream& out, const State& s)
+void writeTrajectoryRows(std::ostream& out, const State& s, bool spin)
 {
     // "%.17g" as the contract asks, through std::to_chars so a locale's decimal comma
     // never reaches the file.
@@ -36,6 +42,10 @@ void writeTrajectoryRows(std::ostream& out, const State& s)
             *at++ = ',';
             at = put(at, s.v(a, i));
         }
+        for (int a = 0; spin && a < 3; ++a) {
+            *at++ = ',';
+            at = put(at, s.spins() ? s.w(a, i) : 0.0);
+        }
         *at++ = '\n';
         out.write(line, at - line);
     }
@@ -54,7 +64,10 @@ State readFirstState(const std::filesystem::path& path)
         line.pop_back();
     if (line.rfind("t,ball,x,y,z,vx,vy,vz", 0) != 0)
         throw InputError("--init: " + name + " does not start with the header t,ball,x,y,z,vx,vy,vz");
-    std::vector<std::array<double, 7>> rows; // t, x, y, z, vx, vy, vz
+    const bool spin =
+        line.compare(21, 9, spinColumns) == 0 && (line.size() == 30 || line[30] == ','); // wx,wy,wz right after vz
+    const std::size_t columns = spin ? 11 : 8;
+    std::vector<std::array<double, 10>> rows; // t, x, y, z, vx, vy, vz (, wx, wy, wz)
     long lineNo = 1;
     while (std::getline(in, line)) {
         ++lineNo;
@@ -68,14 +81,15 @@ State readFirstState(const std::filesystem::path& path)
             cells.push_back(rest.substr(0, comma));
         cells.push_back(rest);
         const std::string where = "--init: " + name + " line " + std::to_string(lineNo);
-        if (cells.size() < 8)
-            throw InputError(where + ": expected 8 columns, found " + std::to_string(cells.size()));
-        std::array<double, 7> row{};
+        if (cells.size() < columns)
+            throw InputError(where + ": expected " + std::to_string(columns) + " columns, found " +
+                             std::to_string(cells.size()));
+        std::array<double, 10> row{};
         row[0] = parseReal(cells[0], where + " column t");
         const long long ball = parseInteger(cells[1], where + " column ball");
-        static const char* const columns[6] = {"x", "y", "z", "vx", "vy", "vz"};
-        for (int c = 0; c < 6; ++c)
-            row[c + 1] = parseReal(cells[c + 2], where + " column " + columns[c]);
+        static const char* const names[9] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz"};
+        for (std::size_t c = 0; c + 2 < columns; ++c)
+            row[c + 1] = parseReal(cells[c + 2], where + " column " + names[c]);
         if (!rows.empty() && row[0] != rows.front()[0])
             break; // the next recorded time: the first state is complete
         if (ball != static_cast<long long>(rows.size()))
@@ -88,10 +102,14 @@ State readFirstState(const std::filesystem::path& path)
     State s;
     s.resize(static_cast<int>(rows.size()));
     s.t = rows.front()[0];
+    if (spin)
+        s.w.setZero(3, s.size());
     for (std::size_t i = 0; i < rows.size(); ++i)
         for (int a = 0; a < 3; ++a) {
             s.p(a, static_cast<Eigen::Index>(i)) = rows[i][1 + a];
             s.v(a, static_cast<Eigen::Index>(i)) = rows[i][4 + a];
+            if (spin)
+                s.w(a, static_cast<Eigen::Index>(i)) = rows[i][7 + a];
         }
     return s;
 }

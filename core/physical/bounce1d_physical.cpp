@@ -20,10 +20,16 @@ std::unique_ptr<Simulation> makeBounce1d(const RunSpec& spec, double dt)
     w.mass = {v.real("m")};
     w.restSpeed = v.real("rest_speed");
     w.walls = {floorWall(0.0, v.real("k"), 0.0)};
+    // Rotation: the ball moves on the vertical axis only, so its contact point has no
+    // tangential velocity and the floor needs no friction; spin about the vertical stays.
+    w.spinRadius = v.real("r");
+    w.inertia = v.real("inertia");
     State s;
     s.resize(1);
     s.p(1, 0) = v.real("h0");
     s.v(1, 0) = v.real("v0");
+    s.w.setZero(3, 1);
+    s.w(1, 0) = v.real("w0");
     return makePhysicalSimulation(spec, dt, std::move(w), std::move(s), {"h0"});
 }
 

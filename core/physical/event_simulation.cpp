@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Event-driven motion: exact, with no time step in the physics.
 //  1. Between events every ball moves on a closed-form segment: the parabola
-//     p0 + v0 t + a t^2 / 2 with a = gravity in flight, a = 0 (or the constant friction
-//     deceleration while sliding) at rest on the floor.
+//     p0 + v0 t + a t^2 / 2 with a = gravity in flight, a = 0 at rest on the floor (or
+//     the constant friction deceleration while it slides on a rough floor), and the spin
+//     w0 + alpha t (constant in flight and rolling, alpha of rolling.h S2 while sliding).
+//     A sliding ball's change to rolling is an event at its exact time t* (S3).
 //  2. Wall and floor impacts are roots of quadratics; two balls under the same gravity
 //     move in a straight line relative to each other, so their contact time is a quadratic
 //     root too (a quartic when one of them rests on the floor). roots.h solves both.
@@ -30,6 +32,7 @@
 #include "impacts.h"
 #include "integrators.h"
 #include "physical_simulation.h"
+#include "rolling.h"
 #include "roots.h"
 
 #include "../params.h"
@@ -50,7 +53,9 @@ constexpr long long maxEventsAtOnce = 10'000;
 struct Segment {
     double t0 = 0.0;
     Eigen::Vector3d p0 = Eigen::Vector3d::Zero(), v0 = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
-    double end = never; // a sliding ball stops here (friction); it is still afterwards
+    Eigen::Vector3d w0 = Eigen::Vector3d::Zero(), alpha = Eigen::Vector3d::Zero(); // spin
+    double end = never; // a sliding ball rolls from here (friction, S3)
+    int support = -1;   // the wall it slides on
     // Zeno series of a lone ball: the height is bounces launched from `floor` at ts with
     // speed u, each k times the last, until tRest.
     bool series = false;
@@ -59,7 +64,7 @@ struct Segment {
     long long logged = 0; // series bounces already written to the impact log
 };
 
-enum class Kind { Wall, Pair, Rest, Stop };
+enum class Kind { Wall, Pair, Rest, Roll };
 
 struct Event {
     double t;
@@ -93,11 +98,13 @@ public:
         const double tEnd = s.t + dt_;
         run(tEnd);
         next = s;
+        withSpin(next);
         next.t = tEnd;
         for (int i = 0; i < s.size(); ++i) {
             const Kinematics k = at(i, tEnd);
             next.p.col(i) = k.p;
             next.v.col(i) = k.v;
+            next.w.col(i) = k.w;
         }
         next.count = count_;
         next.bounces = bounces_;
@@ -106,7 +113,10 @@ public:
     }
 
 private:
-    static bool sameMotion(const State& a, const State& b) { return a.t == b.t && a.p == b.p && a.v == b.v; }
+    static bool sameMotion(const State& a, const State& b)
+    {
+        return a.t == b.t && a.p == b.p && a.v == b.v && a.spins() == b.spins() && (!a.spins() || a.w == b.w);
+    }
 
     Segment& seg(int i) { return segments_[static_cast<std::size_t>(i)]; }
     const Segment& seg(int i) const { return segments_[static_cast<std::size_t>(i)]; }
@@ -122,7 +132,7 @@ private:
         count_ = s.count;
         bounces_ = s.bounces;
         for (int i = 0; i < n; ++i)
-            seg(i) = segmentFrom(i, s.t, {s.p.col(i), s.v.col(i)});
+            seg(i) = segmentFrom(i, s.t, {s.p.col(i), s.v.col(i), s.spin(i)});
         for (int i = 0; i < n; ++i)
             predict(i, s.t, i + 1);
     }
@@ -133,9 +143,11 @@ private:
     {
         const Segment& g = seg(i);
         const double tau = std::min(t, g.end) - g.t0;
-        Kinematics k{g.p0 + g.v0 * tau + 0.5 * tau * tau * g.a, g.v0 + g.a * tau};
-        if (t >= g.end)
-            k.v.setZero(); // stopped by friction: at rest on the floor
+        Kinematics k{g.p0 + g.v0 * tau + 0.5 * tau * tau * g.a, g.v0 + g.a * tau, g.w0 + g.alpha * tau};
+        if (t >= g.end) { // rolling on from t*, uniformly (no drag here)
+            roll(world_, wall(g.support), k.v, k.w);
+            k.p += k.v * (t - g.end);
+        }
         if (g.series) {
             const auto [y, vy] = seriesHeight(g, t);
             k.p.y() = y;
@@ -173,32 +185,39 @@ private:
         return {floor.position + un * tau - 0.5 * world_.g * tau * tau, un - world_.g * tau};
     }
 
-    // The segment a ball starts at time t in state k: resting on the floor (sliding to a
-    // stop under friction) or flying under gravity.
+    // The segment a ball starts at time t in state k: resting on the floor (sliding until
+    // it rolls, S2-S3, or rolling) or flying under gravity.
     Segment segmentFrom(int i, double t, const Kinematics& k) const
     {
         Segment g;
         g.t0 = t;
         g.p0 = k.p;
         g.v0 = k.v;
+        g.w0 = k.w;
         const Wall* support = restingOn(world_, k.p, k.v);
-        g.a = acceleration(world_, i, k.v, support);
-        if (support && support->mu > 0.0) {
-            const double speed = k.v.norm();
-            const double decel = g.a.norm();
-            if (speed > 0.0 && decel > 0.0)
-                g.end = t + speed / decel; // Coulomb friction: constant deceleration mu g
+        const Rates r = rates(world_, i, k.v, k.w, support);
+        g.a = r.a;
+        g.alpha = r.alpha;
+        const double h = rollTime(world_, i, k.v, k.w, support);
+        if (h != never) {
+            g.end = t + h;
+            g.support = static_cast<int>(support - world_.walls.data());
         }
         return g;
     }
 
+    bool rollsOn(int w, const Kinematics& k) const
+    {
+        return !world_.rough(wall(w)) || rolls(world_, wall(w), k.v, k.w);
+    }
+
     // A lone ball leaving the floor at t with speed u enters the series when nothing
-    // along the floor couples to its bounces (no friction, or nothing sliding).
+    // along the floor couples to its bounces (a smooth floor, or no slip at its contact
+    // point: Walton's impulse is then zero at every bounce).
     bool seriesAllowed(int w, const Kinematics& k) const
     {
         const Wall& floor = wall(w);
-        const double slide = std::hypot(k.v.x(), k.v.z());
-        return world_.balls() == 1 && world_.supports(floor) && floor.k < 1.0 && (floor.mu == 0.0 || slide == 0.0);
+        return world_.balls() == 1 && world_.supports(floor) && floor.k < 1.0 && rollsOn(w, k);
     }
 
     Segment seriesFrom(int i, int w, double t, const Kinematics& k) const
@@ -229,7 +248,7 @@ private:
         queue_.push({t, kind, i, j, versions_[static_cast<std::size_t>(i)], vj});
     }
 
-    // Events of ball i from time `now`: its walls, its series end or friction stop, and
+    // Events of ball i from time `now`: its walls, its series end or start of rolling, and
     // its pairs with every other ball (all of them when firstPartner is 0; on a restart
     // each pair once).
     void predict(int i, double now, int firstPartner = 0)
@@ -238,7 +257,7 @@ private:
         if (g.series)
             push(g.tRest, Kind::Rest, i, 0);
         else if (std::isfinite(g.end))
-            push(g.end, Kind::Stop, i, 0);
+            push(g.end, Kind::Roll, i, 0);
         const Kinematics k = at(i, now);
         const Wall* support = g.series ? &wall(g.floor) : restingOn(world_, k.p, k.v);
         for (int w = 0; w < static_cast<int>(world_.walls.size()); ++w) {
@@ -304,7 +323,7 @@ private:
             hitPair(ev.i, ev.j, ev.t);
             return;
         case Kind::Rest:
-        case Kind::Stop:
+        case Kind::Roll:
             restart(ev.i, ev.t, segmentFrom(ev.i, ev.t, at(ev.i, ev.t)));
             return;
         }
@@ -334,11 +353,12 @@ private:
         Wall hit = wall(w);
         if (!world_.supports(hit) && clustered(i, t))
             hit.k = 1.0;
-        const double speed = resolveWallImpact(world_, hit, k.v, shortestFlight(world_, hit, t));
+        const double speed = resolveWallImpact(world_, hit, k.v, k.w, shortestFlight(world_, hit, t));
         if (speed > 0.0)
             count({t, i, -1, w, speed});
-        if (before.series && k.v.y() == vy) {
-            // A side wall without friction leaves the height alone: the series goes on.
+        if (before.series && k.v.y() == vy && rollsOn(before.floor, k)) {
+            // A side wall that leaves the height alone, and the contact point on the floor
+            // without slip: the series goes on.
             Segment g = segmentFrom(i, t, k);
             g.a.setZero();
             g.series = true;
@@ -360,7 +380,7 @@ private:
         Kinematics ki = at(i, t), kj = at(j, t);
         separatePair(world_, i, j, ki.p, kj.p); // on the contact exactly (they are within round-off of it)
         const std::optional<double> e = clustered(i, t) || clustered(j, t) ? std::optional<double>(1.0) : std::nullopt;
-        const double speed = resolvePairImpact(world_, i, j, ki.p, kj.p, ki.v, kj.v, e);
+        const double speed = resolvePairImpact(world_, i, j, ki.p, kj.p, ki.v, kj.v, {ki.w, kj.w}, e);
         if (speed > 0.0) {
             ++bounces_[static_cast<std::size_t>(j)];
             lastImpact_[static_cast<std::size_t>(j)] = t;

@@ -6,7 +6,19 @@
 
 namespace ab::physical {
 
-double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, double minFlight)
+namespace {
+
+// The share lambda of the sticking impulse that Walton's rule allows: 1 when sticking
+// (S9) is the smaller, mu P_n / |P_stick| when sliding (S10) is. `stick` and `slide` are
+// the two impulses' sizes in any common unit.
+double waltonShare(double stick, double slide)
+{
+    return stick <= slide ? 1.0 : slide / stick;
+}
+
+} // namespace
+
+double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, Eigen::Vector3d& omega, double minFlight)
 {
     const double approach = -wall.normalSpeed(v);
     if (!(approach > 0.0))
@@ -16,13 +28,18 @@ double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, d
     // in resting contact instead of an endless (Zeno) series of ever smaller bounces.
     if (w.supports(wall) && (rebound <= w.restSpeed || 2.0 * rebound < minFlight * w.g))
         rebound = 0.0;
-    if (wall.mu > 0.0) {
-        Eigen::Vector3d slide = v;
-        slide[wall.axis] = 0.0;
-        const double speed = slide.norm();
+    if (w.rough(wall)) {
+        // Slip before the impact, g_t = v_t - r w x n (S1). Per unit mass the sticking
+        // impulse is (1 + beta) q/(1+q) |g_t| and the sliding bound mu (approach + rebound).
+        const Eigen::Vector3d n = wall.normal();
+        Eigen::Vector3d g = v - w.spinRadius * omega.cross(n);
+        g[wall.axis] = 0.0;
+        const double q = w.inertia, speed = g.norm();
         if (speed > 0.0) {
-            const double loss = std::min(speed, wall.mu * (approach + rebound));
-            v -= loss / speed * slide;
+            const double c = waltonShare((1.0 + w.beta) * q / (1.0 + q) * speed, wall.mu * (approach + rebound)) *
+                             (1.0 + w.beta) / (1.0 + q);
+            v -= c * q * g;                         // dv = P_t / m = -c q g_t      (S9-S10)
+            omega += c / w.spinRadius * n.cross(g); // dw = -r n x P_t / I = c n x g_t / r (S13)
         }
     }
     v[wall.axis] = wall.side * rebound;
@@ -30,7 +47,7 @@ double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, d
 }
 
 double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi, const Eigen::Vector3d& pj,
-                         Eigen::Vector3d& vi, Eigen::Vector3d& vj, std::optional<double> e)
+                         Eigen::Vector3d& vi, Eigen::Vector3d& vj, Spins spins, std::optional<double> e)
 {
     const Eigen::Vector3d n = (pi - pj).normalized();
     const double closing = (vi - vj).dot(n);
@@ -40,9 +57,33 @@ double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi
     const double mj = w.mass[static_cast<std::size_t>(j)];
     // One impulse J n, added to one ball and taken from the other: momentum is conserved
     // by construction, and the relative normal velocity becomes -e times what it was.
-    const Eigen::Vector3d impulse = (-(1.0 + e.value_or(w.e)) * closing / (1.0 / mi + 1.0 / mj)) * n;
+    const double restitution = e.value_or(w.e);
+    // The slip at the contact point before the impact (pi - r n = pj + r n):
+    // g = v_i - v_j - r (w_i + w_j) x n, and its part along the contact plane (S11).
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    if (w.roughPairs()) {
+        g = vi - vj - w.spinRadius * (spins.i + spins.j).cross(n);
+        g -= g.dot(n) * n;
+    }
+    const Eigen::Vector3d impulse = (-(1.0 + restitution) * closing / (1.0 / mi + 1.0 / mj)) * n;
     vi += impulse / mi;
     vj -= impulse / mj;
+    const double speed = g.norm();
+    if (speed > 0.0) {
+        // Per unit reduced mass mr: sticking (1 + beta) q/(1+q) |g_t|, sliding mu (1 + e) |closing|;
+        // P_t = -c q mr g_t on i, -P_t on j, and each ball turns by -r n x (+-P_t) / (q m r^2)
+        // = c mr n x g_t / (m r), the same sign for both (S12).
+        const double q = w.inertia, mr = 1.0 / (1.0 / mi + 1.0 / mj);
+        const double c =
+            waltonShare((1.0 + w.beta) * q / (1.0 + q) * speed, w.pairMu * (1.0 + restitution) * -closing) *
+            (1.0 + w.beta) / (1.0 + q);
+        const Eigen::Vector3d tangential = c * q * mr * g; // -P_t
+        vi -= tangential / mi;
+        vj += tangential / mj;
+        const Eigen::Vector3d turn = c * mr / w.spinRadius * n.cross(g);
+        spins.i += turn / mi;
+        spins.j += turn / mj;
+    }
     return -closing;
 }
 

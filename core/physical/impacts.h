@@ -1,11 +1,23 @@
 // SPDX-License-Identifier: MIT
 // Impact rules of the physical model, shared by every integrator and scene: an
-// instantaneous impulse along the contact normal with restitution, Coulomb friction
-// along the tangent the velocity itself gives, and the rest rule. They change velocities
-// only; where the impact happens is the integrator's business.
+// instantaneous impulse along the contact normal with restitution, a tangential impulse
+// at rough contacts (Walton's model, below), and the rest rule. They change velocities
+// and spins only; where the impact happens is the integrator's business.
+//
+// Walton's tangential impulse (docs/spin.md, eqs S9-S13). At the contact point the
+// tangential relative velocity g_t (the slip, rolling.h S1) changes by an impulse P_t;
+// with the ball's rotation it answers with the effective mass m* = q/(1+q) m (for a pair
+// with m the reduced mass m_i m_j / (m_i + m_j)), g_t' = g_t + P_t / m*. The impulse is
+// the smaller of
+//     sticking:  P_t = -(1 + beta) m* g_t      (g_t' = -beta g_t)        (S9)
+//     sliding:   |P_t| = mu P_n, against g_t   (Coulomb)                  (S10)
+// and it turns the ball(s) by dw = -r n x P_t / I about the centre (n: the normal towards
+// the ball). With mu = 0 or beta = -1 the impulse is zero and nothing changes.
 #pragma once
 
 #include "world.h"
+
+#include <Eigen/Geometry> // cross products
 
 #include <algorithm>
 #include <cmath>
@@ -14,14 +26,15 @@
 
 namespace ab::physical {
 
-// Ball with velocity v hits `wall` (its centre on the wall). Along the normal
-// v_n'' = -k v_n' (eq 2.3); along the wall the tangential velocity v_t (whatever its
-// direction) loses at most mu times the normal change, |dv_t| <= mu |dv_n| (Coulomb
-// impulse friction; it stops at zero, it does not reverse). On a supporting wall the
-// rebound is cut to zero (the ball stays in resting contact) when it is slower than
-// w.restSpeed or when its flight 2 u / g would be shorter than `minFlight`.
-// Returns the approach speed (0 when the ball was not approaching: v is unchanged).
-double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, double minFlight);
+// Ball with velocity v and spin omega hits `wall` (its centre on the wall). Along the
+// normal v_n'' = -k v_n' (eq 2.3); along the wall Walton's impulse (S9-S10) on a rough
+// wall, which keeps the angular momentum about the contact point, m r n x v + I w (S13).
+// On a supporting wall the rebound is cut to zero (the ball stays in resting contact)
+// when it is slower than w.restSpeed or when its flight 2 u / g would be shorter than
+// `minFlight`. Returns the approach speed (0 when the ball was not approaching: nothing
+// changes).
+double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, Eigen::Vector3d& omega,
+                         double minFlight);
 
 // The shortest bounce off `wall` that double precision can follow at time t. A flight
 // must last about a thousand units in the last place of t, or its timing is so coarse
@@ -38,12 +51,19 @@ inline double shortestFlight(const World& w, const Wall& wall, double t)
 
 // Balls i and j (centres pi, pj) collide: with n the unit vector along the line of
 // centres, the normal parts follow momentum conservation for any masses and restitution
-// e (eqs 2.4-2.7 with masses), the tangential parts are kept (eqs 2.8-2.11):
+// e (eqs 2.4-2.7 with masses):
 // J = -(1 + e) (v_i - v_j).n / (1/m_i + 1/m_j), v_i += J n / m_i, v_j -= J n / m_j.
+// Smooth balls keep their tangential parts (eqs 2.8-2.11); rough ones (World::roughPairs)
+// exchange Walton's impulse P_t at their contact point, +P_t on i and -P_t on j (S11-S12),
+// so momentum is kept and both spins change by -r n x P_t / I, the same for equal balls.
 // Returns the approach speed along n (0 when they were not approaching). `e` overrides
 // the world's restitution when given.
+struct Spins {
+    Eigen::Vector3d& i;
+    Eigen::Vector3d& j;
+};
 double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi, const Eigen::Vector3d& pj,
-                         Eigen::Vector3d& vi, Eigen::Vector3d& vj, std::optional<double> e = std::nullopt);
+                         Eigen::Vector3d& vi, Eigen::Vector3d& vj, Spins spins, std::optional<double> e = std::nullopt);
 
 // Moves two overlapping (or nearly touching) centres apart along their line to exactly
 // 2 r, each by its share of the inverse mass, so the centre of mass stays where it was.

@@ -11,10 +11,13 @@ namespace ab::physical {
 
 struct Kinematics {
     Eigen::Vector3d p, v;
+    Eigen::Vector3d w = Eigen::Vector3d::Zero(); // spin
 };
 
 // Advances ball i by h with `integrator` (euler, symplectic-euler, verlet or rk4;
-// anything else is a logic error). `support` is the wall it rests on, or null.
+// anything else is a logic error). `support` is the wall it rests on, or null. The spin
+// follows dw/dt = alpha (rolling.h) with the same scheme as the velocity: in flight alpha
+// is zero, so every integrator keeps w exactly (free rotation of a sphere).
 Kinematics advance(Integrator integrator, const World& w, int i, const Wall* support, const Kinematics& s, double h);
 
 // Under a constant acceleration a every integrator's step is a polynomial in h:

@@ -65,11 +65,21 @@ void checkStart(const World& w, const State& s, const std::vector<std::string>& 
 
 } // namespace
 
+bool hasRotation(const Simulation& sim, const State& start)
+{
+    const World* w = worldOf(sim);
+    if (!w || !(w->spinRadius > 0.0))
+        return false;
+    return w->anyRough() || (start.spins() && !start.w.isZero(0.0));
+}
+
 std::unique_ptr<Simulation> makePhysicalSimulation(const RunSpec& spec, double dt, World world, State initial,
                                                    const std::vector<std::string>& names)
 {
     checkIntegrator(spec, world);
     checkStart(world, initial, names, false);
+    if (!initial.spins())
+        initial.w.setZero(3, initial.size());
     if (spec.init)
         checkStart(world, *spec.init, names, true);
     if (spec.integrator == Integrator::Event)

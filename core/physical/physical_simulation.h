@@ -26,7 +26,8 @@ class PhysicalSimulation : public Simulation {
 public:
     const World& world() const { return world_; }
     State initialState() const override { return initial_; }
-    double energy(const State& s) const { return physical::energy(world_, s.p, s.v); }
+    // Translation, rotation and potential energy.
+    double energy(const State& s) const { return physical::energy(world_, s); }
 
     // Every later impact is appended to `log` (not owned; nullptr stops logging).
     void setImpactLog(std::vector<Impact>* log) { log_ = log; }
@@ -38,6 +39,13 @@ protected:
     }
 
     bool logging() const { return log_ != nullptr; }
+    // Gives a state without spins (one made by hand, or read from a file without them)
+    // the zero spins of balls that do not turn.
+    static void withSpin(State& s)
+    {
+        if (!s.spins())
+            s.w.setZero(3, s.size());
+    }
     void logImpact(const Impact& impact)
     {
         if (log_)
@@ -58,6 +66,10 @@ inline const World* worldOf(const Simulation& sim)
     const auto* physical = dynamic_cast<const PhysicalSimulation*>(&sim);
     return physical ? &physical->world() : nullptr;
 }
+
+// The run turns its balls: a physical simulation of stages 1-3 whose contacts have
+// friction, or whose start state spins. Its trajectory CSV carries wx,wy,wz.
+bool hasRotation(const Simulation& sim, const State& start);
 
 // Validates the integrator and impact mode for the physical model and the start state
 // against the world (every centre on the free side of every wall, pairs at least 2 r

@@ -9,14 +9,17 @@
 //  2. step-end: the step is taken whole, and a ball found inside a wall or another ball
 //     at its end is put back on the contact and bounced, as the report does. The impact
 //     is late by up to one step, so the error is first order whatever the integrator.
-// A ball resting on the floor moves under the contact constraint (world.h); a sliding
-// ball that friction brings to a stop is stopped there (located) or at the step's end.
+// A ball resting on the floor moves under the contact constraint (world.h); on a rough
+// floor friction spins a sliding ball up until it rolls (rolling.h): located steps end at
+// that moment and put the ball on the rolling state there, step-end steps at the step's
+// end. Spin follows the same integrator as the velocity; in flight it is constant.
 // Located steps also end where the flight law itself has a kink (the drag -c |v| v of a
 // ball thrown straight up, at its apex), so no step straddles it: across the kink the
 // velocity's third derivative jumps, which would cost rk4 an order.
 #include "impacts.h"
 #include "integrators.h"
 #include "physical_simulation.h"
+#include "rolling.h"
 #include "roots.h"
 
 #include <algorithm>
@@ -46,6 +49,7 @@ public:
     void step(State& s, State& next) override
     {
         next = s;
+        withSpin(next);
         next.t = s.t + dt_;
         if (located_)
             stepLocated(next, s.t);
@@ -54,7 +58,7 @@ public:
     }
 
 private:
-    enum class Kind { None, Wall, Pair, Stop, Apex };
+    enum class Kind { None, Wall, Pair, Roll, Apex };
     struct Candidate {
         double h = never;
         Kind kind = Kind::None;
@@ -62,7 +66,7 @@ private:
         int j = 0; // other ball or wall index
     };
 
-    Kinematics ball(const State& s, int i) const { return {s.p.col(i), s.v.col(i)}; }
+    Kinematics ball(const State& s, int i) const { return {s.p.col(i), s.v.col(i), s.w.col(i)}; }
     const Wall* support(int i) const { return support_[static_cast<std::size_t>(i)]; }
 
     void classify(const State& s)
@@ -76,28 +80,30 @@ private:
         return advance(integrator_, world_, i, support(i), ball(s, i), h);
     }
 
-    // Moves every ball h on. Friction never reverses a sliding ball: one that friction
-    // stops within h (located steps end there; step-end steps do not) is still afterwards.
+    // Moves every ball h on. Friction never reverses a slip: a ball that starts to roll
+    // within h (located steps end there; step-end steps do not) rolls afterwards.
     void advanceAll(State& s, double h) const
     {
         for (int i = 0; i < s.size(); ++i) {
-            const bool stops = stopTime(s, i) <= h;
+            const bool rollsBy = rollTimeOf(s, i) <= h;
             const Kinematics k = advanceBall(s, i, h);
             s.p.col(i) = k.p;
             s.v.col(i) = k.v;
-            if (stops)
-                s.v.col(i) -= slideOf(i, k.v);
+            s.w.col(i) = k.w;
+            if (rollsBy)
+                rollOn(s, i);
         }
     }
 
-    // The velocity along the wall a ball rests on (zero when it is not resting).
-    Eigen::Vector3d slideOf(int i, const Eigen::Vector3d& v) const
+    double rollTimeOf(const State& s, int i) const { return rollTime(world_, i, s.v.col(i), s.w.col(i), support(i)); }
+
+    // Puts a sliding ball on the rolling state friction leads it to (rolling.h, S4).
+    void rollOn(State& s, int i) const
     {
-        if (!support(i))
-            return Eigen::Vector3d::Zero();
-        Eigen::Vector3d slide = v;
-        slide[support(i)->axis] = 0.0;
-        return slide;
+        Eigen::Vector3d v = s.v.col(i), w = s.w.col(i);
+        roll(world_, *support(i), v, w);
+        s.v.col(i) = v;
+        s.w.col(i) = w;
     }
 
     void stepLocated(State& s, double t0)
@@ -119,9 +125,9 @@ private:
             }
             advanceAll(s, c.h);
             done += c.h;
-            const Vec3Array before = s.v;
+            const Vec3Array before = s.v, spinBefore = s.w;
             apply(s, c, t0 + done);
-            if (c.h == 0.0 && s.v == before) {
+            if (c.h == 0.0 && s.v == before && s.w == spinBefore) {
                 // A contact pressed shut that no impulse opens: a ball resting on another,
                 // which needs a contact model this one does not have. Step-end rules finish
                 // the step instead of finding the same contact again and again.
@@ -154,7 +160,7 @@ private:
             for (std::size_t w = 0; w < world_.walls.size(); ++w)
                 if (&world_.walls[w] != support(i))
                     consider(wallCrossing(s, i, world_.walls[w], left), Kind::Wall, i, static_cast<int>(w));
-            consider(stopTime(s, i), Kind::Stop, i, 0);
+            consider(rollTimeOf(s, i), Kind::Roll, i, 0);
             consider(apexTime(s, i, left), Kind::Apex, i, 0);
             for (int j = i + 1; j < s.size(); ++j)
                 consider(pairCrossing(s, i, j, left), Kind::Pair, i, j);
@@ -167,7 +173,7 @@ private:
         const Kinematics k = ball(s, i);
         if (!world_.hasDrag()) {
             // Constant acceleration: the step map is p + v h + alpha a h^2 (integrators.h).
-            const Eigen::Vector3d a = acceleration(world_, i, k.v, support(i));
+            const Eigen::Vector3d a = rates(world_, i, k.v, k.w, support(i)).a;
             return firstInwardCrossing({wall.gap(k.p), wall.normalSpeed(k.v), alpha_ * wall.side * a[wall.axis], 0, 0},
                                        left);
         }
@@ -179,22 +185,10 @@ private:
         return gEnd < 0.0 ? bracketedRoot(gapAfter, 0.0, g0, left, gEnd) : never;
     }
 
-    // When friction stops a sliding ball: where its deceleration along the slide, taken as
-    // it is at the start, brings the speed to zero. Exact without drag (mu g is constant);
-    // drag adds to the deceleration as long as it slides, so with drag the stop is first
-    // order. (Solving on the step map instead fails: past the stop the friction force
-    // flips, and velocity Verlet's average of the two cancels it.)
-    double stopTime(const State& s, int i) const
-    {
-        if (!support(i) || support(i)->mu <= 0.0)
-            return never;
-        const Eigen::Vector3d slide = slideOf(i, s.v.col(i));
-        const double speed = slide.norm();
-        if (speed == 0.0)
-            return never;
-        const double decel = -acceleration(world_, i, s.v.col(i), support(i)).dot(slide / speed);
-        return decel > 0.0 ? speed / decel : never;
-    }
+    // rollTime (rolling.h): where the slip's rate of change, taken as it is at the start,
+    // brings it to zero. Exact without drag; with drag first order, as it changes the
+    // slip's rate while it slides. (Solving on the step map instead fails: past the
+    // moment the friction force flips, and velocity Verlet's average of the two cancels.)
 
     // When a ball moving straight up under quadratic drag stops rising: there |v| v is
     // not twice differentiable. (With any sideways motion |v| never reaches zero.)
@@ -217,8 +211,8 @@ private:
             // Same gravity on both: their separation moves on the polynomial
             // d(h) = d0 + d1 h + d2 h^2 (d2 = 0 unless one of them rests), and
             // |d(h)|^2 - (2r)^2 is a polynomial of degree 2 (or 4).
-            const Eigen::Vector3d d2 = alpha_ * (acceleration(world_, i, s.v.col(i), support(i)) -
-                                                 acceleration(world_, j, s.v.col(j), support(j)));
+            const Eigen::Vector3d d2 = alpha_ * (rates(world_, i, s.v.col(i), s.w.col(i), support(i)).a -
+                                                 rates(world_, j, s.v.col(j), s.w.col(j), support(j)).a);
             return firstInwardCrossing({d0.squaredNorm() - reach * reach, 2.0 * d0.dot(d1),
                                         d1.squaredNorm() + 2.0 * d0.dot(d2), 2.0 * d1.dot(d2), d2.squaredNorm()},
                                        left);
@@ -256,8 +250,8 @@ private:
         case Kind::Pair:
             hitPair(s, c.i, c.j, t);
             return;
-        case Kind::Stop:
-            s.v.col(c.i) -= slideOf(c.i, s.v.col(c.i));
+        case Kind::Roll:
+            rollOn(s, c.i);
             return;
         case Kind::Apex:
             s.v(1, c.i) = 0.0; // the root leaves it within round-off of zero
@@ -270,10 +264,12 @@ private:
 
     void hitWall(State& s, int i, int w, double t, double stepFlight)
     {
-        Eigen::Vector3d v = s.v.col(i);
+        Eigen::Vector3d v = s.v.col(i), spin = s.w.col(i);
         const Wall& wall = world_.walls[static_cast<std::size_t>(w)];
-        const double speed = resolveWallImpact(world_, wall, v, std::max(stepFlight, shortestFlight(world_, wall, t)));
+        const double speed =
+            resolveWallImpact(world_, wall, v, spin, std::max(stepFlight, shortestFlight(world_, wall, t)));
         s.v.col(i) = v;
+        s.w.col(i) = spin;
         if (speed > 0.0)
             count(s, {t, i, -1, w, speed});
     }
@@ -281,12 +277,15 @@ private:
     void hitPair(State& s, int i, int j, double t)
     {
         Eigen::Vector3d pi = s.p.col(i), pj = s.p.col(j), vi = s.v.col(i), vj = s.v.col(j);
+        Eigen::Vector3d wi = s.w.col(i), wj = s.w.col(j);
         separatePair(world_, i, j, pi, pj, true);
-        const double speed = resolvePairImpact(world_, i, j, pi, pj, vi, vj);
+        const double speed = resolvePairImpact(world_, i, j, pi, pj, vi, vj, {wi, wj});
         s.p.col(i) = pi;
         s.p.col(j) = pj;
         s.v.col(i) = vi;
         s.v.col(j) = vj;
+        s.w.col(i) = wi;
+        s.w.col(j) = wj;
         if (speed > 0.0) {
             ++s.bounces[static_cast<std::size_t>(j)];
             count(s, {t, i, j, -1, speed});

@@ -24,28 +24,44 @@ const Wall* restingOn(const World& w, const Eigen::Vector3d& p, const Eigen::Vec
     return nullptr;
 }
 
-Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, const Wall* support)
+bool World::anyRough() const
+{
+    if (roughPairs() && balls() > 1)
+        return true;
+    for (const Wall& wall : walls)
+        if (rough(wall))
+            return true;
+    return false;
+}
+
+namespace {
+
+Eigen::Vector3d freeAcceleration(const World& w, int i, const Eigen::Vector3d& v)
 {
     Eigen::Vector3d a = w.gravity();
     if (w.hasDrag()) // F = -b v - c |v| v, divided by the mass
         a -= (w.dragLinear + w.dragQuadratic * v.norm()) / w.mass[static_cast<std::size_t>(i)] * v;
+    return a;
+}
+
+} // namespace
+
+Eigen::Vector3d acceleration(const World& w, int i, const Eigen::Vector3d& v, const Wall* support)
+{
+    Eigen::Vector3d a = freeAcceleration(w, i, v);
     if (!support)
         return a;
     // Resting contact: the normal force N/m equals the acceleration pressing into the wall
-    // and cancels it; friction mu N/m acts against the sliding velocity (the velocity's
-    // own direction along the wall, not a fixed axis).
-    const double pressing = -support->side * a[support->axis];
-    if (pressing <= 0.0)
+    // and cancels it.
+    if (-support->side * a[support->axis] <= 0.0)
         return a;
     a[support->axis] = 0.0;
-    if (support->mu > 0.0) {
-        Eigen::Vector3d slide = v;
-        slide[support->axis] = 0.0;
-        const double speed = slide.norm();
-        if (speed > 0.0)
-            a -= support->mu * pressing / speed * slide;
-    }
     return a;
+}
+
+double pressing(const World& w, int i, const Eigen::Vector3d& v, const Wall& wall)
+{
+    return -wall.side * freeAcceleration(w, i, v)[wall.axis];
 }
 
 KineticPotential energyParts(const World& w, const Vec3Array& p, const Vec3Array& v)
@@ -60,10 +76,26 @@ KineticPotential energyParts(const World& w, const Vec3Array& p, const Vec3Array
     return e;
 }
 
+KineticPotential energyParts(const World& w, const State& s)
+{
+    KineticPotential e = energyParts(w, s.p, s.v);
+    if (s.spins()) // E_rot = 1/2 I |w|^2 with I = q m r^2
+        for (int i = 0; i < w.balls(); ++i)
+            e.rotational += 0.5 * w.inertia * w.mass[static_cast<std::size_t>(i)] * w.spinRadius * w.spinRadius *
+                            s.w.col(i).squaredNorm();
+    return e;
+}
+
 double energy(const World& w, const Vec3Array& p, const Vec3Array& v)
 {
     const KineticPotential e = energyParts(w, p, v);
     return e.kinetic + e.potential;
+}
+
+double energy(const World& w, const State& s)
+{
+    const KineticPotential e = energyParts(w, s);
+    return e.kinetic + e.potential + e.rotational;
 }
 
 } // namespace ab::physical

@@ -23,7 +23,7 @@ SceneInfo makeBounce1d()
     s.reportSteps = 2000;
     s.params = {
         real("g", "g", "unit/step^2", 0.0982, 0.0, 1e6, "eq 2.1, 2.15",
-                      "magnitude of gravity; the report's code scales 9.82 to 0.0982 per step^2 with dt = 1"),
+             "magnitude of gravity; the report's code scales 9.82 to 0.0982 per step^2 with dt = 1"),
         real("k", "k", "1", 0.6, 0.0, 1.0, "eq 2.3, 2.13", "coefficient of restitution at the floor: v1 = -k v0"),
         real("h0", "h0", "unit", 2000.0, 0.0, 1e9, "Appendix A", "start height of the ball above the floor"),
         real("v0", "v0", "unit/step", 0.0, -1e6, 1e6, "Appendix A", "start vertical velocity, up positive"),
@@ -38,16 +38,20 @@ SceneInfo makeBounce1d()
              PhysicalModel),
         real("rest_speed", "v_rest", "unit/step", 0.0, 0.0, 1e6, "2.2.1 (Zeno)",
              "an impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)", PhysicalModel),
+        spinRadiusParam("unit"),
+        inertiaParam(),
+        real("w0", "w0", "rad/step", 0.0, -1e6, 1e6, "free rotation: w constant in flight",
+             "start spin about the vertical axis, up positive (right-hand rule): the only spin a ball moving on one "
+             "axis can have; the floor's contact point has no lever on it, so it stays",
+             PhysicalModel),
         integer("contact", "contact", 0, 0, 2, "report 1.2",
                 "floor contact of the physical model: 0 impulse v1 = -k v0 (eq 2.3), 1 linear spring-dashpot, "
                 "2 Hertz spring with damping; springs take their damping from k",
                 PhysicalModel),
         real("contact_time", "t_c", "step", 5.0, 1e-6, 1e6, "report 1.2",
-             "duration of one spring contact (contact 1 or 2); with k it sets stiffness and damping",
-             PhysicalModel),
+             "duration of one spring contact (contact 1 or 2); with k it sets stiffness and damping", PhysicalModel),
         real("stiffness", "k_s", "1/step^2", 0.0, 0.0, 1e12, "report 1.2",
-             "spring stiffness per unit mass (Hertz: per unit^1/2); 0 takes it from contact_time",
-             PhysicalModel),
+             "spring stiffness per unit mass (Hertz: per unit^1/2); 0 takes it from contact_time", PhysicalModel),
     };
     s.equations = {
         {"2.1", "-g = dv/dt", "free flight: gravity is the only force"},

@@ -36,10 +36,11 @@ SceneInfo makeBox3d()
              PhysicalModel),
         real("c", "c", "kg/m", 0.0, 0.0, 1e9, "3.1 (air resistance)", "quadratic air drag, force -c |v| v (0: none)",
              PhysicalModel),
-        real("mu", "mu", "1", 0.0, 0.0, 10.0, "Coulomb friction",
-             "friction at floor and walls: an impact changes the velocity along the wall by at most mu times the "
-             "change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)",
-             PhysicalModel),
+        frictionParam(false),
+        betaParam(),
+        inertiaParam(),
+        spinRadiusParam("m"),
+        startSpinParam("w0", "rad/s", "start angular velocity of the ball (x, y, z), right-hand rule"),
         real("rest_speed", "v_rest", "m/s", 0.0, 0.0, 1e6, "2.2.2 (Zeno)",
              "a floor impact slower than this does not rebound: the ball rests (0: bounce to the Zeno time)",
              PhysicalModel),
@@ -65,7 +66,8 @@ SceneInfo makeBox3d()
         {"eqs 2.18-2.22", "The equations and the refactored function propagation (Appendix C) move the "
                           "position with the new velocity; the older listing of Appendix B uses the old one. "
                           "The product follows the equations."},
-        {"Appendix B", "At the floor the new vertical velocity is -k v - g dt (g the magnitude; the code adds grav dt with grav = -9.82) and the position restarts from the "
+        {"Appendix B", "At the floor the new vertical velocity is -k v - g dt (g the magnitude; the code adds grav dt "
+                       "with grav = -9.82) and the position restarts from the "
                        "floor, p[new] = v[new] dt; the contact state's stored coordinate is set to the face it hit."},
         {"Appendix B", "Every contact adds one to a counter; once it exceeds max_bounces the state the step "
                        "started from and every later state are set to zero."},

@@ -20,4 +20,12 @@ ParamSpec vector(std::string key, std::string symbol, std::string unit, Eigen::V
                  std::string equation, std::string meaning, unsigned models = BothModels);
 ParamSpec positive(ParamSpec spec); // marks the lower bound as exclusive
 
+// Rotation rows of the physical model (spin_params.cpp): mu (also between the balls when
+// `betweenBalls`), beta, inertia, the radius of a point-contact ball, and a start spin.
+ParamSpec frictionParam(bool betweenBalls);
+ParamSpec betaParam();
+ParamSpec inertiaParam();
+ParamSpec spinRadiusParam(const std::string& unit);
+ParamSpec startSpinParam(const std::string& key, const std::string& unit, std::string meaning);
+
 } // namespace ab::scenes

@@ -1323,10 +1323,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Innan rapporten valde en studskoefficient övervägdes fjäderekvationer för studsen. Den fysikaliska modellen erbjuder dem som `contact` 1 (y&apos;&apos; = -g - k_s y - c_s v under golvet) och 2 (Hertz, y&apos;&apos; = -g + k_h d^1.5 - c_h d^0.25 v med d = -y); deras dämpning ger studskoefficienten k och deras styvhet kontakttiden t_c, och en styv fjäder gör differentialekvationen styv.</translation>
     </message>
     <message>
-        <source>Coulomb friction</source>
-        <translation>Coulombfriktion</translation>
-    </message>
-    <message>
         <source>Each ball moves with the stage-2 rules (propagation). propagation works on a copy, so unlike stage 2 the recorded contact state keeps its unclamped coordinate.</source>
         <translation>Varje boll rör sig enligt reglerna i etapp 2 (propagation). propagation arbetar på en kopia, så till skillnad från etapp 2 behåller det inspelade kontakttillståndet sin obegränsade koordinat.</translation>
     </message>
@@ -1625,10 +1621,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>free flight: gravity is the only force</source>
         <translation>fri flykt: gravitationen är den enda kraften</translation>
-    </message>
-    <message>
-        <source>friction at floor and walls: an impact changes the velocity along the wall by at most mu times the change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)</source>
-        <translation>friktion vid golv och väggar: en stöt ändrar hastigheten längs väggen med högst mu gånger ändringen tvärs den; en boll som glider på golvet bromsas med mu g (0: friktionsfri)</translation>
     </message>
     <message>
         <source>gravity per frame; the code subtracts 9.82/1000 from dy each frame</source>
@@ -1937,6 +1929,66 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>The report&apos;s stage 1 (solid ball, full lines) beside the physical model with symplectic Euler and impacts located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The energy chart shows where the two part.</source>
         <translation>Rapportens etapp 1 (hel boll, heldragna linjer) bredvid den fysikaliska modellen med symplektisk Euler och stötar lokaliserade inom steget (spökboll, prickade linjer): samma start, samma konstanter, samma steg 1. Rapporten hittar varje studs först i slutet av ett steg och stoppar bollen efter 10 studsar; den fysikaliska modellen löser varje stöttid inom steget och låter bollen komma till vila enligt sin egen viloregel. Energidiagrammet visar var de två skiljs åt.</translation>
+    </message>
+    <message>
+        <source>Walton S10, rolling S2</source>
+        <translation>Walton S10, rullning S2</translation>
+    </message>
+    <message>
+        <source>Walton S9</source>
+        <translation>Walton S9</translation>
+    </message>
+    <message>
+        <source>I = q m r^2</source>
+        <translation>I = q m r^2</translation>
+    </message>
+    <message>
+        <source>free rotation: w constant in flight</source>
+        <translation>fri rotation: w konstant under flykten</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>rad/step</source>
+        <translation>rad/steg</translation>
+    </message>
+    <message>
+        <source>Coulomb friction at every contact, walls, floor and between the balls: an impact&apos;s tangential impulse is at most mu times its normal one, and a ball sliding on the floor feels mu m g at its contact point until it rolls (0: smooth)</source>
+        <translation>Coulombfriktion vid varje kontakt, väggar, golv och mellan bollarna: en stöts tangentiella impuls är högst mu gånger dess normala, och en boll som glider på golvet känner mu m g i sin kontaktpunkt tills den rullar (0: glatt)</translation>
+    </message>
+    <message>
+        <source>Coulomb friction at floor and walls: an impact&apos;s tangential impulse is at most mu times its normal one, and a ball sliding on the floor feels mu m g at its contact point until it rolls (0: smooth)</source>
+        <translation>Coulombfriktion vid golv och väggar: en stöts tangentiella impuls är högst mu gånger dess normala, och en boll som glider på golvet känner mu m g i sin kontaktpunkt tills den rullar (0: glatt)</translation>
+    </message>
+    <message>
+        <source>tangential restitution of the contact point&apos;s sliding velocity when friction holds it: -1 smooth (no friction at all), 0 the contact point stops, 1 it reverses (a superball)</source>
+        <translation>tangentiell studskoefficient för kontaktpunktens glidhastighet när friktionen håller: -1 glatt (ingen friktion alls), 0 kontaktpunkten stannar, 1 den vänder (en superboll)</translation>
+    </message>
+    <message>
+        <source>moment of inertia as a fraction of m r^2: 2/5 a solid ball, 2/3 a hollow shell</source>
+        <translation>tröghetsmoment som andel av m r^2: 2/5 en massiv boll, 2/3 ett tunt skal</translation>
+    </message>
+    <message>
+        <source>radius of the ball: the lever arm of friction and the r of I = q m r^2 (for contact the ball is a point, as in the report)</source>
+        <translation>bollens radie: friktionens hävarm och r i I = q m r^2 (för kontakt är bollen en punkt, som i rapporten)</translation>
+    </message>
+    <message>
+        <source>start spin about the vertical axis, up positive (right-hand rule): the only spin a ball moving on one axis can have; the floor&apos;s contact point has no lever on it, so it stays</source>
+        <translation>startrotation kring den lodräta axeln, uppåt positiv (högerhandsregeln): den enda rotation en boll som rör sig längs en axel kan ha; golvets kontaktpunkt har ingen hävarm på den, så den består</translation>
+    </message>
+    <message>
+        <source>start angular velocity of the ball (x, y, z), right-hand rule</source>
+        <translation>bollens vinkelhastighet vid start (x, y, z), högerhandsregeln</translation>
+    </message>
+    <message>
+        <source>start angular velocity of ball 1 (x, y, z), right-hand rule</source>
+        <translation>boll 1:s vinkelhastighet vid start (x, y, z), högerhandsregeln</translation>
+    </message>
+    <message>
+        <source>start angular velocity of ball 2 (x, y, z), right-hand rule</source>
+        <translation>boll 2:s vinkelhastighet vid start (x, y, z), högerhandsregeln</translation>
     </message>
 </context>
 <context>

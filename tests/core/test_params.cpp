@@ -51,8 +51,11 @@ private slots:
         const ab::SceneInfo& s = ab::sceneInfo(ab::SceneId::Bounce1d);
         QCOMPARE(s.axes, 1);
         const auto v = s.defaults();
-        for (const char* absent : {"box", "p0", "r", "e", "n"})
+        for (const char* absent : {"box", "p0", "e", "n", "mu", "beta"})
             QVERIFY(!v.indexOf(absent));
+        // Its ball is a point for contact; the radius only sets its spin's inertia, so it
+        // belongs to the physical model alone.
+        QCOMPARE(v.spec("r").models, unsigned(ab::PhysicalModel));
     }
 
     void parsesNumbersAndVectors()

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The physical model's time stepping: each integrator's energy behaviour in free flight
 // (worked out by hand), exact located impacts, conservation of momentum in every pair
-// collision, energy that never rises with located impacts, Coulomb friction, the rest
+// collision, energy that never rises with located impacts, Walton's friction, the rest
 // rule, and the contact geometry (no sinking, no overlap).
 #include "core/physical/impacts.h"
 #include "core/physical/physical_simulation.h"
@@ -210,7 +210,8 @@ private slots:
                 v2(uniform(-9, 9), uniform(-9, 9), uniform(-9, 9));
             const auto [r1, r2] = ab::reference::obliqueOutcome(w.mass[0], w.mass[1], p1, p2, v1, v2, w.e);
             const Eigen::Vector3d before = w.mass[0] * v1 + w.mass[1] * v2;
-            ab::physical::resolvePairImpact(w, 0, 1, p1, p2, v1, v2);
+            Eigen::Vector3d w1 = Eigen::Vector3d::Zero(), w2 = Eigen::Vector3d::Zero();
+            ab::physical::resolvePairImpact(w, 0, 1, p1, p2, v1, v2, {w1, w2});
             const double scale = std::max(1.0, v1.norm() + v2.norm());
             QVERIFY((v1 - r1).norm() <= 1e-13 * scale);
             QVERIFY((v2 - r2).norm() <= 1e-13 * scale);
@@ -218,41 +219,45 @@ private slots:
         }
     }
 
-    void wallImpactWithCoulombFriction()
+    void wallImpactWithWaltonFriction()
     {
-        // v = (3, -4, 0) onto the floor, k = 0.5: the normal part goes -4 -> 2 (change 6);
-        // friction takes at most mu 6 from the 3 m/s along the floor.
+        // v = (3, -4, 0) onto the floor, k = 0.5, a solid ball (q = 0.4) without spin: the
+        // normal part goes -4 -> 2 (impulse 6 per unit mass). Sticking with beta = 0 would
+        // take (1 + beta) q / (1 + q) 3 = 6/7 from the 3 m/s along the floor.
         ab::physical::World w;
         w.g = 9.82;
         w.mass = {1.0};
-        ab::physical::Wall floor = ab::physical::floorWall(0.0, 0.5, 0.2);
-        Eigen::Vector3d v(3, -4, 0);
-        QCOMPARE(ab::physical::resolveWallImpact(w, floor, v, 0.0), 4.0);
-        QVERIFY((v - Eigen::Vector3d(3 - 1.2, 2, 0)).norm() < 1e-15);
-        floor.mu = 1.0; // friction enough to stop the sliding: it sticks, it does not reverse
+        w.spinRadius = 1.0;
+        w.beta = 0.0;
+        ab::physical::Wall floor = ab::physical::floorWall(0.0, 0.5, 0.1);
+        // mu = 0.1: sliding, bounded by mu 6 = 0.6, which also gives r w = 0.6 / q = 1.5
+        // about -z (the rolling sense of motion along +x).
+        Eigen::Vector3d v(3, -4, 0), spin = Eigen::Vector3d::Zero();
+        QCOMPARE(ab::physical::resolveWallImpact(w, floor, v, spin, 0.0), 4.0);
+        QVERIFY((v - Eigen::Vector3d(3 - 0.6, 2, 0)).norm() < 1e-15);
+        QVERIFY((spin - Eigen::Vector3d(0, 0, -1.5)).norm() < 1e-15);
+        // mu = 1: sticking, the contact point stops: v_x = 3 - 6/7 = 15/7 = r |w|.
+        floor.mu = 1.0;
         v = {3, -4, 0};
-        ab::physical::resolveWallImpact(w, floor, v, 0.0);
-        QVERIFY((v - Eigen::Vector3d(0, 2, 0)).norm() < 1e-15);
-        // A wall's tangent is the velocity's own: along y and z for the wall x = 0.
-        ab::physical::Wall wall{0, 0.0, 1.0, 1.0, 0.1, "wall x = 0"};
+        spin.setZero();
+        ab::physical::resolveWallImpact(w, floor, v, spin, 0.0);
+        QVERIFY((v - Eigen::Vector3d(15.0 / 7.0, 2, 0)).norm() < 1e-15);
+        QVERIFY((spin - Eigen::Vector3d(0, 0, -15.0 / 7.0)).norm() < 1e-15);
+        // A wall's tangent is the slip's own: along y and z for the wall x = 0, where
+        // mu = 0.05 of the normal impulse 20 bounds the change to 1 along (3, 4)/5 (sticking
+        // would take 2/7 of the 5 m/s, 1.43).
+        ab::physical::Wall wall{0, 0.0, 1.0, 1.0, 0.05, "wall x = 0"};
         v = {-10, 3, 4};
-        ab::physical::resolveWallImpact(w, wall, v, 0.0);
-        QVERIFY((v - Eigen::Vector3d(10, 3 * (1 - 2.0 / 5.0), 4 * (1 - 2.0 / 5.0))).norm() < 1e-14);
-    }
-
-    void slidingBallStopsAfterVOverMuG()
-    {
-        // On the floor at 6 m/s with mu = 0.5: deceleration mu g = 4.91 m/s^2, stop after
-        // 6 / 4.91 = 1.222 s at x = 10 + 36 / (2 4.91) = 13.666 m.
-        for (Integrator i : {Integrator::Verlet, Integrator::Rk4, Integrator::Event}) {
-            const Run run = record(physical(SceneId::Box3d, i, 0.05, {"p0=10,0,150", "v0=6,0,0", "mu=0.5"}), 60);
-            const ab::State& end = run.states.back();
-            QVERIFY(std::abs(end.p(0, 0) - (10.0 + 36.0 / (2.0 * 4.91))) < 1e-9);
-            QCOMPARE(end.v.col(0).norm(), 0.0);
-            QCOMPARE(end.p(1, 0), 0.0);
-            const ab::State& moving = run.states[20]; // t = 1 s: v = 6 - 4.91
-            QVERIFY(std::abs(moving.v(0, 0) - (6.0 - 4.91)) < 1e-9);
-        }
+        spin.setZero();
+        ab::physical::resolveWallImpact(w, wall, v, spin, 0.0);
+        QVERIFY((v - Eigen::Vector3d(10, 3 * (1 - 1.0 / 5.0), 4 * (1 - 1.0 / 5.0))).norm() < 1e-14);
+        // A smooth contact (beta = -1) changes nothing along the wall, whatever mu.
+        w.beta = -1.0;
+        v = {-10, 3, 4};
+        spin = {1, 2, 3};
+        ab::physical::resolveWallImpact(w, wall, v, spin, 0.0);
+        QCOMPARE(v, Eigen::Vector3d(10, 3, 4));
+        QCOMPARE(spin, Eigen::Vector3d(1, 2, 3));
     }
 
     void restSpeedCutsTheReboundForLocatedImpactsToo()

@@ -41,9 +41,10 @@ namespace {
 const std::set<QString>& sameInBothLanguages()
 {
     static const std::set<QString> words = [] {
-        std::set<QString> w{"Amazeballs", "Ctrl",   "Shift",   "Home",    "Euler",      "Explicit", "Implicit", "Runge",
-                            "Kutta",      "Verlet", "Zeno",    "Hertz",   "Integrator", "OpenGL",   "WebGL",    "CSV",
-                            "PNG",        "SVG",    "English", "Svenska", "position",   "Position", "sqrt"};
+        std::set<QString> w{"Amazeballs", "Ctrl",  "Shift",  "Home", "Euler",   "Explicit",   "Implicit",
+                            "Runge",      "Kutta", "Verlet", "Zeno", "Hertz",   "Integrator", "OpenGL",
+                            "WebGL",      "CSV",   "PNG",    "SVG",  "English", "Svenska",    "position",
+                            "Position",   "sqrt",  "Walton", "rad"};
         auto addTokens = [&w](std::string_view key) {
             const QString s = QString::fromUtf8(key.data(), qsizetype(key.size()));
             for (const QString& token : s.split(QRegularExpression("[^A-Za-z0-9_]+"), Qt::SkipEmptyParts))

@@ -39,7 +39,6 @@ const char* const listed[] = {
                 "bounce. The physical model offers them as `contact` 1 (y'' = -g - k_s y - c_s v below the floor) and "
                 "2 (Hertz, y'' = -g + k_h d^1.5 - c_h d^0.25 v with d = -y); their damping gives the restitution k and "
                 "their stiffness the contact time t_c, and a stiff spring makes the ODE stiff."),
-    QT_TRANSLATE_NOOP("core", "Coulomb friction"),
     QT_TRANSLATE_NOOP("core", "Each ball moves with the stage-2 rules (propagation). propagation works on a copy, so "
                               "unlike stage 2 the recorded contact state keeps its unclamped coordinate."),
     QT_TRANSLATE_NOOP("core", "Event-driven (exact)"),
@@ -152,9 +151,28 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "free fall"),
     QT_TRANSLATE_NOOP("core", "free fall: position moves with the OLD velocity"),
     QT_TRANSLATE_NOOP("core", "free flight: gravity is the only force"),
-    QT_TRANSLATE_NOOP("core",
-                      "friction at floor and walls: an impact changes the velocity along the wall by at most mu times "
-                      "the change across it; a ball sliding on the floor decelerates by mu g (0: frictionless)"),
+    QT_TRANSLATE_NOOP("core", "Walton S10, rolling S2"),
+    QT_TRANSLATE_NOOP("core", "Walton S9"),
+    QT_TRANSLATE_NOOP("core", "I = q m r^2"),
+    QT_TRANSLATE_NOOP("core", "free rotation: w constant in flight"),
+    QT_TRANSLATE_NOOP("core", "rad/s"),
+    QT_TRANSLATE_NOOP("core", "rad/step"),
+    QT_TRANSLATE_NOOP("core", "Coulomb friction at every contact, walls, floor and between the balls: an impact's "
+                              "tangential impulse is at most mu times its normal one, and a ball sliding on the floor "
+                              "feels mu m g at its contact point until it rolls (0: smooth)"),
+    QT_TRANSLATE_NOOP(
+        "core", "Coulomb friction at floor and walls: an impact's tangential impulse is at most mu times its normal "
+                "one, and a ball sliding on the floor feels mu m g at its contact point until it rolls (0: smooth)"),
+    QT_TRANSLATE_NOOP("core", "tangential restitution of the contact point's sliding velocity when friction holds it: "
+                              "-1 smooth (no friction at all), 0 the contact point stops, 1 it reverses (a superball)"),
+    QT_TRANSLATE_NOOP("core", "moment of inertia as a fraction of m r^2: 2/5 a solid ball, 2/3 a hollow shell"),
+    QT_TRANSLATE_NOOP("core", "radius of the ball: the lever arm of friction and the r of I = q m r^2 (for contact the "
+                              "ball is a point, as in the report)"),
+    QT_TRANSLATE_NOOP("core", "start spin about the vertical axis, up positive (right-hand rule): the only spin a ball "
+                              "moving on one axis can have; the floor's contact point has no lever on it, so it stays"),
+    QT_TRANSLATE_NOOP("core", "start angular velocity of the ball (x, y, z), right-hand rule"),
+    QT_TRANSLATE_NOOP("core", "start angular velocity of ball 1 (x, y, z), right-hand rule"),
+    QT_TRANSLATE_NOOP("core", "start angular velocity of ball 2 (x, y, z), right-hand rule"),
     QT_TRANSLATE_NOOP("core", "gravity per frame; the code subtracts 9.82/1000 from dy each frame"),
     QT_TRANSLATE_NOOP("core", "kg"),
     QT_TRANSLATE_NOOP("core", "kg/m"),
