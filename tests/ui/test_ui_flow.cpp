@@ -289,6 +289,13 @@ private slots:
         QVERIFY(integrator->isEnabled());
         QCOMPARE(integrator->count(), int(ab::allIntegrators().size())); // the report's entry is gone
         QCOMPARE(integrator->currentData().toInt(), int(w.controller().spec().integrator));
+        // Compared with the report model, the comparison's impacts are the report's too.
+        ab::RunVariant report;
+        report.model = ab::ModelKind::Report;
+        w.runOptions()->compareBox()->setCurrentIndex(w.runOptions()->compareIndex(report));
+        QVERIFY(w.controller().comparing());
+        QVERIFY2(w.runOptions()->compareImpactsBox()->currentText().contains("step's end"),
+                 qPrintable(w.runOptions()->compareImpactsBox()->currentText()));
     }
 
     void theStatusAfterAScrubIsThatOfTheMomentShown()

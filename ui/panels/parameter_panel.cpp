@@ -109,7 +109,10 @@ void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const Par
         auto* number = new NumberField(field, spec.kind == ParamKind::Vector    ? NumberKind::Vector
                                               : spec.kind == ParamKind::Integer ? NumberKind::Integer
                                                                                 : NumberKind::Real);
-        connect(number, &NumberField::done, this, &ParameterPanel::editDone);
+        connect(number, &NumberField::done, this, [this, key] {
+            if (!refused_.count(key)) // a refused entry keeps the keys, to be fixed
+                emit editDone();
+        });
         connect(number, &NumberField::reverted, this, [this, key] { revert(key); });
     }
     showValues(values);

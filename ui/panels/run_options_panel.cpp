@@ -12,6 +12,7 @@
 #include <QLineEdit>
 
 #include <algorithm>
+#include <tuple>
 
 namespace ab::ui {
 
@@ -142,7 +143,10 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
     for (QLineEdit* field : {dt_, steps_}) {
         connect(field, &QLineEdit::editingFinished, this, [this] { propose(); });
         auto* number = new NumberField(field, field == dt_ ? NumberKind::Real : NumberKind::Integer);
-        connect(number, &NumberField::done, this, &RunOptionsPanel::editDone);
+        connect(number, &NumberField::done, this, [this, field] {
+            if (!refused_.count(field) && windowRefusal_.isEmpty()) // a refused entry keeps the keys
+                emit editDone();
+        });
         connect(number, &NumberField::reverted, this, [this, field] {
             refused_.erase(field);
             if (scene_)
@@ -182,17 +186,20 @@ QString RunOptionsPanel::reportImpacts(SceneId scene)
 void RunOptionsPanel::showScheme()
 {
     const bool report = shown_.model == ModelKind::Report;
-    for (auto [box, text] : {std::pair{integrator_, report && scene_ ? reportScheme(scene_->id) : QString()},
-                             std::pair{impacts_, report && scene_ ? reportImpacts(scene_->id) : QString()}}) {
-        const int own = box->findData(reportOwn);
-        if (report) {
-            if (own < 0)
+    const bool reportCompared = shown_.compare && shown_.compare->model == ModelKind::Report;
+    const QString scheme = scene_ ? reportScheme(scene_->id) : QString();
+    const QString impacts = scene_ ? reportImpacts(scene_->id) : QString();
+    for (auto [box, own, text] : {std::tuple{integrator_, report, scheme}, std::tuple{impacts_, report, impacts},
+                                  std::tuple{compareImpacts_, reportCompared, impacts}}) {
+        const int at = box->findData(reportOwn);
+        if (own) {
+            if (at < 0)
                 box->insertItem(0, text, reportOwn);
             else
-                box->setItemText(own, text);
+                box->setItemText(at, text);
             box->setCurrentIndex(0);
-        } else if (own >= 0) {
-            box->removeItem(own);
+        } else if (at >= 0) {
+            box->removeItem(at);
         }
     }
 }
@@ -202,6 +209,7 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     updating_ = true;
     scene_ = &scene;
     shown_ = options;
+    showScheme(); // the report's entries go where the physical choices now show
     selectData(model_, int(options.model));
     selectData(integrator_, int(options.integrator));
     selectData(impacts_, int(options.impacts));
@@ -310,8 +318,9 @@ void RunOptionsPanel::propose()
         RunVariant v;
         v.model = ModelKind(code / 100);
         v.integrator = v.model == ModelKind::Report ? Integrator::SymplecticEuler : Integrator(code % 100);
+        const int impactsCode = compareImpacts_->currentData().toInt();
         v.impacts =
-            v.model == ModelKind::Report ? ImpactMode::Located : ImpactMode(compareImpacts_->currentData().toInt());
+            v.model == ModelKind::Report || impactsCode == reportOwn ? ImpactMode::Located : ImpactMode(impactsCode);
         // A step the comparison was given (a preset's) stays while its model stays.
         if (shown_.compare && shown_.compare->model == v.model)
             v.dt = shown_.compare->dt;
