@@ -250,6 +250,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.showScene(SceneId::Box3d);
+        w.controller().setSpeed(1.0); // real time, not the stage's 10x: a few frames a step
         auto lastTime = [&](ab::ui::ChartKind kind) {
             const QList<QPointF> points = w.charts()->chart(kind)->line(0)->points();
             return points.isEmpty() ? -1.0 : points.back().x();

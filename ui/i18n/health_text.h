@@ -18,7 +18,8 @@ struct FindingText {
     QString what;   // what happened, with its figure, the time and the balls
     QString rule;   // the report's rule behind it, with its appendix; empty when none
     QString remedy; // what to change
-    QString headline() const { return what; }
+    // What happened without its figures in brackets: the status bar's one line.
+    QString headline() const { return what.section(QStringLiteral(" ("), 0, 0); }
     QString full() const; // "What (the report's rule). Remedy."
 };
 

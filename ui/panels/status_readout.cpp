@@ -130,18 +130,18 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
     // run paused on it), the report's own rules at work, then a warning of the check.
     if (!s.warning.empty() && !back) {
         if (finding && s.worst.finding.kind == diagnostics::FindingKind::NonFinite)
-            return {tr("Stopped: %1").arg(found.what), tr("Stopped: %1").arg(found.full()), Tone::Severe};
+            return {tr("Stopped: %1").arg(found.headline()), tr("Stopped: %1").arg(found.full()), Tone::Severe};
         const QString text = tr("Stopped: %1").arg(QString::fromStdString(s.warning));
         return {text, text, Tone::Severe};
     }
     if (finding && s.worst.level == diagnostics::Health::Failed) {
         const QString paused = s.pausedOnHealth && !back ? tr("Paused: %1") : QStringLiteral("%1");
-        return {paused.arg(found.what), paused.arg(found.full()), Tone::Severe};
+        return {paused.arg(found.headline()), paused.arg(found.full()), Tone::Severe};
     }
     if (const auto rules = reportRulesAt(s, shown, back))
         return {rules->section(QStringLiteral(": "), 0, 0), *rules, Tone::Notice};
     if (finding)
-        return {found.what, found.full(), Tone::Notice};
+        return {found.headline(), found.full(), Tone::Notice};
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
         return {text, text, Tone::Plain};
