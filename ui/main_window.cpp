@@ -9,8 +9,10 @@
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
+#include "sim/pacing.h"
 #include "view/ball_view.h"
 
+#include <QApplication>
 #include <QStatusBar>
 
 namespace ab::ui {
@@ -39,7 +41,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&controller_, &RunController::advanced, this, &MainWindow::refresh);
     connect(&controller_, &RunController::playingChanged, transport_, &TransportBar::setPlaying);
     connect(&controller_, &RunController::speedChanged, transport_, &TransportBar::setSpeed);
+    connect(&controller_, &RunController::speedChanged, this,
+            [this](double factor) { setupFor(scene_).speed = factor; });
     connect(&controller_, &RunController::selectionChanged, this, &MainWindow::ballSelected);
+    // Enter in a field applies it and gives the keys back to the window's shortcuts (not
+    // to the 3D view, whose focus takes the arrows for the camera).
+    for (QObject* panel : {static_cast<QObject*>(parameters_), static_cast<QObject*>(runOptions_)})
+        connect(panel, SIGNAL(editDone()), this, SLOT(handKeysBack()));
+    connect(parameters_, &ParameterPanel::reportValuesRequested, runOptions_, &RunOptionsPanel::clearRefusals);
     fpsClock_.start();
     panelTimer_.setInterval(20); // a part a tick: about a frame apart under software OpenGL
     connect(&panelTimer_, &QTimer::timeout, this, &MainWindow::refreshPanelPart);
@@ -57,7 +66,7 @@ MainWindow::Setup& MainWindow::setupFor(SceneId scene)
 {
     auto it = setups_.find(scene);
     if (it == setups_.end()) {
-        Setup s{RunSpec(scene), RunOptions{}};
+        Setup s{RunSpec(scene), RunOptions{}, defaultSpeed(scene)};
         s.options.model = s.spec.model;
         s.options.integrator = s.spec.integrator;
         s.options.impacts = s.spec.impacts;
@@ -86,12 +95,13 @@ void MainWindow::showScene(SceneId scene)
         navigator_->setCurrent(scene_); // stay on the stage that runs
         return;
     }
+    navigator_->setPreset(scene, {}, {}); // the lecturer chose the stage: no preset's text
     showPanels(scene);
 }
 
 std::optional<QString> MainWindow::showSetup(const RunSpec& spec, const RunOptions& options)
 {
-    const Setup candidate{spec, options};
+    const Setup candidate{spec, options, defaultSpeed(spec.scene)};
     if (auto error = startRun(candidate))
         return error;
     setups_.insert_or_assign(spec.scene, candidate);
@@ -107,6 +117,8 @@ void MainWindow::showPanels(SceneId scene)
     navigator_->setCurrent(scene);
     parameters_->setScene(info, setup.spec.model, setup.spec.params);
     runOptions_->showOptions(info, setup.options);
+    controller_.setSpeed(setup.speed);
+    transport_->setSpeed(controller_.speed());
 }
 
 bool MainWindow::applyValues(const ParamValues& values)
@@ -151,7 +163,7 @@ void MainWindow::runReplaced()
     const RunSpec& spec = controller_.spec();
     const SceneLayout& layout = controller_.layout();
     const int ball = controller_.selectedBall();
-    readout_->setUnits(coreText(info.timeUnit), coreText(info.lengthUnit));
+    readout_->setRun(spec);
     // The comparison's lines are named after both runs; without one the names stay plain.
     const QString compareLabel =
         controller_.comparing() ? labelOf(controller_.comparisonEngine()->simulation().spec()) : QString();
@@ -244,12 +256,38 @@ bool MainWindow::resumeFromLookedBackMoment()
     return true;
 }
 
+void MainWindow::takeRunOf(MainWindow& old)
+{
+    setups_ = old.setups_;
+    const std::optional<double> lookedAt = old.transport_->viewTime();
+    framedScene_ = old.framedScene_; // the camera stays where it was, not framed anew
+    controller_.takeOver(old.controller_);
+    showPanels(scene_);
+    for (ChartKind kind : allChartKinds())
+        charts_->setChartShown(kind, old.charts_->chartShown(kind));
+    navigator_->setPreset(scene_, old.navigator_->presetName(), old.navigator_->presetDescription());
+    if (view_ && old.view_) {
+        const OrbitCamera& c = old.view_->camera();
+        view_->setCameraPose(c.target(), c.yaw(), c.pitch(), c.distance());
+    }
+    if (lookedAt)
+        transport_->lookAt(*lookedAt);
+    refresh();
+}
+
 void MainWindow::setTurntable(bool on)
 {
     if (on && view_)
         turntable_.start();
     else
         turntable_.stop();
+}
+
+void MainWindow::handKeysBack()
+{
+    if (QWidget* focus = QApplication::focusWidget(); focus && isAncestorOf(focus))
+        focus->clearFocus();
+    setFocus(Qt::OtherFocusReason);
 }
 
 void MainWindow::showError(const QString& message)

@@ -67,10 +67,21 @@ public:
 
     void setTurntable(bool on);
 
+    // Goes on with `old`'s run as it stands (a language switch builds the window anew):
+    // every stage's setup, the run with its recording, time, comparison, speed and
+    // selection, the moment looked back at, the camera, the charts shown and the preset's
+    // text. `old` is left without a run.
+    void takeRunOf(MainWindow& old);
+
+private slots:
+    // The keyboard back to the window's shortcuts after Enter in a field.
+    void handKeysBack();
+
 private:
     struct Setup {
         RunSpec spec;
         RunOptions options;
+        double speed = 1.0; // the stage's own (defaultSpeed), kept while the window is open
     };
 
     void buildLayout();

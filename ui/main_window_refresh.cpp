@@ -108,7 +108,12 @@ void MainWindow::refreshReadings(const EngineStatus& status)
         start = rec.frames().empty() ? current.t : rec.frames().front().t;
     });
     transport_->setRecorded(start, status.t, coreText(sceneInfo(scene_).timeUnit));
-    readout_->show(status);
+    // The readings are of the moment on screen: the one looked back at, or the live one.
+    const std::optional<double> viewT = transport_->viewTime();
+    controller_.engine().read([&](const Recording& rec, const Frame& current) {
+        const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
+        readout_->show(status, shown ? shown : &current, viewT && shown);
+    });
     if (view_ && fpsClock_.elapsed() >= 1000) {
         readout_->setFrameRate(1000.0 * framesSinceFps_ / double(fpsClock_.restart()));
         framesSinceFps_ = 0;

@@ -199,44 +199,54 @@ struct HealthCheck::Impl {
         if (first)
             return;
         first = true;
-        HealthStatus status{h, {}, {}, t};
-        describe(status.what, status.advice);
+        HealthStatus status{h, {}, {}, t, {}};
+        describe(status.what, status.advice, status.finding);
         issues.push_back(std::move(status));
         issueKinds.push_back(kind);
     }
 
-    // What to change when the method itself misbehaves (energy, divergence).
-    std::string methodAdvice() const
+    // What to change when the method itself misbehaves (energy, divergence): sets the
+    // finding's remedy and returns it in the command line's words.
+    std::string methodAdvice(Finding& f) const
     {
         if (report)
-            return "the report's own rule; a smaller --dt shrinks it, --model physical avoids it";
+            return advise(f, Remedy::ReportSmallerDt);
         const Integrator i = spec.integrator;
         if (spring) {
             const double omega = physical::contactFrequency(*spring, e0);
             const double limit = stability::theoreticalLimit(i);
+            f.integrator = i;
+            f.dtOmega = dt * omega;
             if (i == Integrator::Euler)
-                return "explicit Euler gains energy at every step on a spring (dt omega0 = " + num(dt * omega) +
-                       "): use symplectic-euler, verlet, rk4 or implicit-euler";
-            if (std::isfinite(limit))
-                return "dt omega0 = " + num(dt * omega) + " and " + std::string(integratorKey(i)) +
-                       " is stable only below " + num(limit) + ": use --dt below " + num(limit / omega) +
-                       " or implicit-euler";
-            return "use a smaller --dt";
+                return advise(f, Remedy::SpringEuler);
+            if (std::isfinite(limit)) {
+                f.limit = limit;
+                f.dtLimit = limit / omega;
+                return advise(f, Remedy::SpringLimit);
+            }
+            return advise(f, Remedy::SmallerDt);
         }
         if (i == Integrator::Euler)
-            return "explicit Euler adds energy at every step: use symplectic-euler, verlet or event";
-        return "use a smaller --dt";
+            return advise(f, Remedy::EulerAddsEnergy);
+        return advise(f, Remedy::SmallerDt);
     }
 
-    std::string impactAdvice() const
+    std::string impactAdvice(Finding& f) const
     {
         if (report && spec.scene == SceneId::ManyBalls)
-            return "the report's own rule, one update per frame; --model physical avoids it";
+            return advise(f, Remedy::ReportOnePerFrame);
         if (report)
-            return "the report finds impacts only at the end of a step; a smaller --dt shrinks it";
+            return advise(f, Remedy::ReportStepEnd);
         if (spec.impacts == ImpactMode::StepEnd)
-            return "use --impacts located or a smaller --dt";
-        return "use a smaller --dt";
+            return advise(f, Remedy::LocatedOrSmallerDt);
+        return advise(f, Remedy::SmallerDt);
+    }
+
+    // The remedy kept in the finding, returned in the command line's words.
+    static std::string advise(Finding& f, Remedy r)
+    {
+        f.remedy = r;
+        return remedyText(f);
     }
 
     // A state is non-finite when a number in it is, or when its energy overflows (a speed
@@ -246,9 +256,10 @@ struct HealthCheck::Impl {
         if (std::isfinite(a.t) && a.p.allFinite() && a.v.allFinite() && std::isfinite(e))
             return true;
         fig.nonfinite = true;
-        raise(Kind::NonFinite, Health::Failed, [&](std::string& what, std::string& advice) {
+        raise(Kind::NonFinite, Health::Failed, [&](std::string& what, std::string& advice, Finding& f) {
+            f.kind = FindingKind::NonFinite;
             what = "the state became non-finite (overflow)" + at();
-            advice = methodAdvice();
+            advice = methodAdvice(f);
         });
         return false;
     }
@@ -265,31 +276,39 @@ struct HealthCheck::Impl {
         fig.maxEnergyGain = std::max(fig.maxEnergyGain, gain);
         if (gain <= 1e-6)
             return;
-        raise(Kind::Energy, gain > 0.1 ? Health::Failed : Health::Warning, [&](std::string& what, std::string& advice) {
-            what = "energy " + num(100.0 * gain) + "% above its start" + at() + energyCause();
-            advice = methodAdvice();
+        const Health h = gain > 0.1 ? Health::Failed : Health::Warning;
+        raise(Kind::Energy, h, [&](std::string& what, std::string& advice, Finding& f) {
+            f.kind = FindingKind::Energy;
+            f.amount = 100.0 * gain;
+            what = "energy " + num(f.amount) + "% above its start" + at() + energyCause(f);
+            advice = methodAdvice(f);
         });
     }
 
-    std::string energyCause() const
+    std::string energyCause(Finding& f) const
     {
         if (!report)
             return {};
         switch (spec.scene) {
         case SceneId::Bounce1d:
+            f.rule = ReportRule::ExplicitEulerGain;
             return " (eq 2.16 moves the position with the old velocity: explicit Euler adds g^2 dt^2 / 2 per step "
                    "of flight)";
         case SceneId::Box3d:
         case SceneId::TwoBalls:
+            f.rule = ReportRule::FloorRuleGain;
             return " (the floor rule v' = -k v - g dt of Appendix B adds a step of gravity to each rebound)";
         case SceneId::ManyBalls:
+            f.rule = ReportRule::PushAndWallGravity;
             return " (Appendix D's push of one radius along the normal and its extra gravity at a side wall)";
         }
         return {};
     }
 
-    std::string wallName(const Beyond& b) const
+    std::string wallName(const Beyond& b, Finding& f) const
     {
+        f.wallAxis = b.axis;
+        f.wallFace = b.low ? walls.lo[b.axis] : walls.hi[b.axis];
         if (b.axis == 1)
             return "the floor";
         const double face = b.low ? walls.lo[b.axis] : walls.hi[b.axis];
@@ -304,27 +323,37 @@ struct HealthCheck::Impl {
             return;
         if (spring) {
             if (where.depth > springAllowance)
-                escape(i, [&] {
+                escape(i, [&](Finding& f) {
+                    f.kind = FindingKind::SpringEscaped;
+                    f.amount = where.depth;
                     return "ball went " + length(where.depth) + " into the floor spring" + at() +
                            ", twice deeper than its energy allows (fell through the floor)";
                 });
             else if (where.depth >= 0.5 * springAllowance * physical::kBackstopFactor * (1.0 - 1e-9))
                 // Held by the spring floor's backstop: no solution of the ODE gets there,
                 // so the integrator is unstable at this step.
-                raise(Kind::Backstop, Health::Failed, [&](std::string& what, std::string& advice) {
+                raise(Kind::Backstop, Health::Failed, [&](std::string& what, std::string& advice, Finding& f) {
+                    f.kind = FindingKind::Backstop;
+                    f.balls = {i};
+                    f.amount = where.depth;
+                    f.bound = 0.5 * springAllowance;
                     what = "ball reached the floor spring's backstop, " + length(where.depth) + " deep" + at() +
                            ", 1.5 times deeper than its energy allows (" + length(0.5 * springAllowance) +
                            "): the step is beyond the method's stability, and the backstop held the ball";
-                    advice = methodAdvice();
+                    advice = methodAdvice(f);
                 });
             else if (where.depth > 0.5 * springAllowance * 1.01)
                 // Over 1% deeper than the start's energy can compress the spring: the
                 // method's error, beyond the truncation error of a step that resolves the
                 // contact.
-                raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice) {
+                raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+                    f.kind = FindingKind::SpringPenetration;
+                    f.balls = {i};
+                    f.amount = where.depth;
+                    f.bound = 0.5 * springAllowance;
                     what = "ball went " + length(where.depth) + " into the floor spring" + at() +
                            ", deeper than its energy allows (" + length(0.5 * springAllowance) + ")";
-                    advice = methodAdvice();
+                    advice = methodAdvice(f);
                 });
             return;
         }
@@ -332,34 +361,41 @@ struct HealthCheck::Impl {
         const double travel = dt * std::max(b.v.col(i).norm(), a.v.col(i).norm()) + g * dt * dt +
                               (report && spec.scene == SceneId::ManyBalls ? r : 0.0);
         if (where.depth > travel + tolerance) {
-            escape(i, [&] {
-                return "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) +
-                       at() + " (left the box)" + escapeCause(b, i, where);
+            escape(i, [&](Finding& f) {
+                f.kind = FindingKind::Escaped;
+                f.amount = where.depth;
+                return "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where, f) +
+                       at() + " (left the box)" + escapeCause(b, i, where, f);
             });
             return;
         }
-        raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice) {
-            what = "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where) + at() +
-                   pushCause();
-            advice = impactAdvice();
+        raise(Kind::Penetration, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+            f.kind = FindingKind::Penetration;
+            f.balls = {i};
+            f.amount = where.depth;
+            what = "ball " + std::to_string(i) + " is " + length(where.depth) + " beyond " + wallName(where, f) + at() +
+                   pushCause(f);
+            advice = impactAdvice(f);
         });
     }
 
-    std::string pushCause() const
+    std::string pushCause(Finding& f) const
     {
-        if (report && spec.scene == SceneId::ManyBalls)
-            return " (Appendix D pushes a colliding ball one radius along the normal without clamping it into the "
-                   "box; the next frame's wall check puts it back)";
-        return {};
+        if (!(report && spec.scene == SceneId::ManyBalls))
+            return {};
+        f.rule = ReportRule::UnclampedPush;
+        return " (Appendix D pushes a colliding ball one radius along the normal without clamping it into the "
+               "box; the next frame's wall check puts it back)";
     }
 
-    std::string escapeCause(const State& b, int i, const Beyond& where) const
+    std::string escapeCause(const State& b, int i, const Beyond& where, Finding& f) const
     {
-        if (report && where.axis != 1 && (spec.scene == SceneId::Box3d || spec.scene == SceneId::TwoBalls) &&
-            b.p(1, i) <= 0.0)
-            return ": the report handles one face per step, the floor first (Appendix B), so a ball on the floor "
-                   "never meets a wall";
-        return {};
+        if (!(report && where.axis != 1 && (spec.scene == SceneId::Box3d || spec.scene == SceneId::TwoBalls) &&
+              b.p(1, i) <= 0.0))
+            return {};
+        f.rule = ReportRule::OneFacePerStep;
+        return ": the report handles one face per step, the floor first (Appendix B), so a ball on the floor "
+               "never meets a wall";
     }
 
     template <typename Describe> void escape(int i, Describe describe)
@@ -368,9 +404,10 @@ struct HealthCheck::Impl {
             escapedBall[static_cast<std::size_t>(i)] = 1;
             ++fig.escaped;
         }
-        raise(Kind::Escaped, Health::Failed, [&](std::string& what, std::string& advice) {
-            what = describe();
-            advice = spring ? methodAdvice() : impactAdvice();
+        raise(Kind::Escaped, Health::Failed, [&](std::string& what, std::string& advice, Finding& f) {
+            f.balls = {i};
+            what = describe(f);
+            advice = spring ? methodAdvice(f) : impactAdvice(f);
         });
     }
 
@@ -381,10 +418,14 @@ struct HealthCheck::Impl {
         if (!(report && spec.scene == SceneId::ManyBalls) || b.p(1, i) > walls.lo.y() || a.p.col(i) != b.p.col(i) ||
             a.v.col(i).isZero())
             return;
-        raise(Kind::Stuck, Health::Warning, [&](std::string& what, std::string& advice) {
-            what = "ball " + std::to_string(i) + " lies on the floor with speed " + num(a.v.col(i).norm()) + at() +
+        raise(Kind::Stuck, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+            f.kind = FindingKind::Stuck;
+            f.balls = {i};
+            f.amount = a.v.col(i).norm();
+            f.rule = ReportRule::OnlyAboveFloor;
+            what = "ball " + std::to_string(i) + " lies on the floor with speed " + num(f.amount) + at() +
                    " but does not move: Appendix D updates only balls above the floor";
-            advice = "the report's own rule; --model physical avoids it";
+            advice = advise(f, Remedy::ReportPhysical);
         });
     }
 
@@ -396,16 +437,22 @@ struct HealthCheck::Impl {
         const double overlap = contact - d1.norm();
         if (overlap > 1e-9 * r) {
             fig.maxOverlap = std::max(fig.maxOverlap.value_or(0.0), overlap);
-            raise(Kind::Overlap, Health::Warning, [&](std::string& what, std::string& advice) {
+            raise(Kind::Overlap, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+                f.kind = FindingKind::Overlap;
+                f.balls = {i, j};
+                f.amount = overlap;
                 what = "balls " + std::to_string(i) + " and " + std::to_string(j) + " overlap by " + length(overlap) +
                        at();
-                advice = impactAdvice();
+                advice = impactAdvice(f);
             });
             if (report && spec.scene == SceneId::TwoBalls && d0.norm() < contact)
-                raise(Kind::RepeatedSwap, Health::Warning, [&](std::string& what, std::string& advice) {
+                raise(Kind::RepeatedSwap, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+                    f.kind = FindingKind::RepeatedSwap;
+                    f.balls = {i, j};
+                    f.rule = ReportRule::SwapWithoutTest;
                     what = "the balls still overlap after a swap" + at() +
                            ": Appendix C swaps velocities with no test that the balls approach, so the swap repeats";
-                    advice = "the report's own rule; --model physical avoids it";
+                    advice = advise(f, Remedy::ReportPhysical);
                 });
         } else if (d0.norm() >= contact && freeFlight(b, a, i) && freeFlight(b, a, j)) {
             // Both flew freely (equal gravity keeps their relative motion straight), so
@@ -418,18 +465,26 @@ struct HealthCheck::Impl {
             const double closest = closestApproach(d0, d1);
             const double depth = contact - closest;
             if (depth > 0.1 * r)
-                raise(Kind::Tunnel, Health::Failed, [&](std::string& what, std::string& advice) {
+                raise(Kind::Tunnel, Health::Failed, [&](std::string& what, std::string& advice, Finding& f) {
+                    f.kind = FindingKind::Tunnel;
+                    f.balls = {i, j};
+                    f.amount = closest;
+                    f.bound = contact;
                     what = "balls " + std::to_string(i) + " and " + std::to_string(j) +
                            " passed through each other within one step" + at() + " (closest approach " +
                            length(closest) + ", contact at " + length(contact) + ")";
-                    advice = impactAdvice();
+                    advice = impactAdvice(f);
                 });
             else if (depth > 1e-3 * r)
-                raise(Kind::Graze, Health::Warning, [&](std::string& what, std::string& advice) {
+                raise(Kind::Graze, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+                    f.kind = FindingKind::Graze;
+                    f.balls = {i, j};
+                    f.amount = closest;
+                    f.bound = depth;
                     what = "balls " + std::to_string(i) + " and " + std::to_string(j) +
                            " grazed within one step without colliding" + at() + " (closest approach " +
                            length(closest) + ", " + length(depth) + " inside the contact distance)";
-                    advice = impactAdvice();
+                    advice = impactAdvice(f);
                 });
         }
         fig.maxOverlap = std::max(fig.maxOverlap.value_or(0.0), 0.0);
@@ -464,10 +519,15 @@ struct HealthCheck::Impl {
         fig.maxMomentumError = std::max(fig.maxMomentumError.value_or(0.0), error);
         if (error <= 1e-9)
             return;
-        raise(Kind::Momentum, Health::Warning, [&](std::string& what, std::string& advice) {
-            what = "momentum changed by " + num(100.0 * error) + "% of the pair's speeds in a contact" + at() +
+        raise(Kind::Momentum, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
+            f.kind = FindingKind::Momentum;
+            f.balls = {0, 1};
+            f.amount = 100.0 * error;
+            if (report)
+                f.rule = ReportRule::SwapScaledByE;
+            what = "momentum changed by " + num(f.amount) + "% of the pair's speeds in a contact" + at() +
                    (report ? " (Appendix C scales both swapped velocities by e)" : "");
-            advice = report ? "the report's own rule; --model physical conserves momentum" : "use a smaller --dt";
+            advice = advise(f, report ? Remedy::ReportMomentum : Remedy::SmallerDt);
         });
     }
 
@@ -590,7 +650,7 @@ HealthStatus HealthCheck::worst() const
 {
     if (impl_->fig.nonfinite) // what stopped the run
         for (const HealthStatus& s : impl_->issues)
-            if (s.what.rfind("the state became non-finite", 0) == 0)
+            if (s.finding.kind == FindingKind::NonFinite)
                 return s;
     for (Health level : {Health::Failed, Health::Warning})
         for (const HealthStatus& s : impl_->issues)

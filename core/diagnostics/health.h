@@ -25,6 +25,8 @@
 //     floor and its unclamped push beyond the walls.
 #pragma once
 
+#include "finding.h"
+
 #include "../simulation.h"
 
 #include <memory>
@@ -43,6 +45,7 @@ struct HealthStatus {
     std::string what;   // what happened, with its figure, the time and the ball
     std::string advice; // what to change
     double t = 0.0;
+    Finding finding; // the same as data
 
     // "what; advice" on one line.
     std::string line() const;

@@ -13,6 +13,157 @@
     </message>
 </context>
 <context>
+    <name>HealthText</name>
+    <message>
+        <source>the floor</source>
+        <translation>golvet</translation>
+    </message>
+    <message>
+        <source>the %1 = %2 wall</source>
+        <translation>väggen %1 = %2</translation>
+    </message>
+    <message>
+        <source>The state became non-finite (an overflow) at t = %1</source>
+        <translation>Tillståndet blev icke-ändligt (ett spill) vid t = %1</translation>
+    </message>
+    <message>
+        <source>Ball %1 is %2 beyond %3 at t = %4: it left the box</source>
+        <translation>Boll %1 är %2 bortom %3 vid t = %4: den lämnade lådan</translation>
+    </message>
+    <message>
+        <source>The ball went %1 into the floor spring at t = %2, twice deeper than its energy allows: it fell through the floor</source>
+        <translation>Bollen gick %1 in i golvfjädern vid t = %2, dubbelt så djupt som dess energi tillåter: den föll genom golvet</translation>
+    </message>
+    <message>
+        <source>The ball reached the floor spring&apos;s backstop, %1 deep at t = %2, 1.5 times deeper than its energy allows (%3): the step is beyond the method&apos;s stability</source>
+        <translation>Bollen nådde golvfjäderns stopp, %1 djupt vid t = %2, 1,5 gånger djupare än dess energi tillåter (%3): steget ligger bortom metodens stabilitet</translation>
+    </message>
+    <message>
+        <source>The ball went %1 into the floor spring at t = %2, deeper than its energy allows (%3)</source>
+        <translation>Bollen gick %1 in i golvfjädern vid t = %2, djupare än dess energi tillåter (%3)</translation>
+    </message>
+    <message>
+        <source>Ball %1 is %2 beyond %3 at t = %4: the impact was found late</source>
+        <translation>Boll %1 är %2 bortom %3 vid t = %4: stöten hittades för sent</translation>
+    </message>
+    <message>
+        <source>The energy is %1% above its start at t = %2</source>
+        <translation>Energin ligger %1 % över sitt startvärde vid t = %2</translation>
+    </message>
+    <message>
+        <source>Balls %1 and %2 overlap by %3 at t = %4</source>
+        <translation>Bollarna %1 och %2 överlappar med %3 vid t = %4</translation>
+    </message>
+    <message>
+        <source>Balls %1 and %2 passed through each other within one step at t = %3 (closest approach %4, contact at %5)</source>
+        <translation>Bollarna %1 och %2 gick igenom varandra under ett enda steg vid t = %3 (minsta avstånd %4, kontakt vid %5)</translation>
+    </message>
+    <message>
+        <source>Balls %1 and %2 grazed within one step without colliding at t = %3 (closest approach %4)</source>
+        <translation>Bollarna %1 och %2 snuddade vid varandra under ett steg utan att kollidera vid t = %3 (minsta avstånd %4)</translation>
+    </message>
+    <message>
+        <source>The momentum changed by %1% of the pair&apos;s speeds in a contact at t = %2</source>
+        <translation>Rörelsemängden ändrades med %1 % av parets farter i en kontakt vid t = %2</translation>
+    </message>
+    <message>
+        <source>The balls still overlap after a swap at t = %1, so the swap repeats</source>
+        <translation>Bollarna överlappar fortfarande efter ett byte vid t = %1, så bytet upprepas</translation>
+    </message>
+    <message>
+        <source>Ball %1 lies on the floor with speed %2 at t = %3 but does not move</source>
+        <translation>Boll %1 ligger på golvet med farten %2 vid t = %3 men rör sig inte</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: eq 2.16 moves the position with the old velocity, so explicit Euler adds g² dt²/2 a step of flight, Appendix A</source>
+        <translation>rapportens egen regel: ekv. 2.16 flyttar positionen med den gamla hastigheten, så explicit Euler lägger till g² dt²/2 per steg i luften, bilaga A</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: the floor rule v&apos; = -k v - g dt adds a step of gravity to each rebound, Appendix B</source>
+        <translation>rapportens egen regel: golvregeln v&apos; = -k v - g dt lägger till ett steg av tyngdkraften i varje studs, bilaga B</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: the push of one radius along the normal and the extra gravity at a side wall, Appendix D</source>
+        <translation>rapportens egen regel: knuffen på en radie längs normalen och den extra tyngdkraften vid en sidovägg, bilaga D</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: a colliding ball is pushed one radius along the normal without being kept in the box, and the next frame&apos;s wall check puts it back, Appendix D</source>
+        <translation>rapportens egen regel: en kolliderande boll knuffas en radie längs normalen utan att hållas kvar i lådan, och nästa bildrutas väggkontroll sätter tillbaka den, bilaga D</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: one face a step, the floor first, so a ball on the floor never meets a wall, Appendix B</source>
+        <translation>rapportens egen regel: en yta per steg, golvet först, så en boll på golvet möter aldrig en vägg, bilaga B</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: the velocities are swapped with no test that the balls approach, Appendix C</source>
+        <translation>rapportens egen regel: hastigheterna byts utan att pröva att bollarna närmar sig varandra, bilaga C</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: both swapped velocities are scaled by e, Appendix C</source>
+        <translation>rapportens egen regel: båda de bytta hastigheterna skalas med e, bilaga C</translation>
+    </message>
+    <message>
+        <source>the report&apos;s own rule: only balls above the floor are updated, so a ball on the floor keeps its last velocity, Appendix D</source>
+        <translation>rapportens egen regel: bara bollar ovanför golvet uppdateras, så en boll på golvet behåller sin senaste hastighet, bilaga D</translation>
+    </message>
+    <message>
+        <source>A smaller step shrinks it; the physical model avoids it.</source>
+        <translation>Ett mindre steg minskar det; den fysikaliska modellen undviker det.</translation>
+    </message>
+    <message>
+        <source>The physical model avoids it.</source>
+        <translation>Den fysikaliska modellen undviker det.</translation>
+    </message>
+    <message>
+        <source>The physical model conserves momentum.</source>
+        <translation>Den fysikaliska modellen bevarar rörelsemängden.</translation>
+    </message>
+    <message>
+        <source>The report updates once per frame; the physical model avoids it.</source>
+        <translation>Rapporten uppdaterar en gång per bildruta; den fysikaliska modellen undviker det.</translation>
+    </message>
+    <message>
+        <source>The report finds impacts only at the end of a step; a smaller step shrinks it.</source>
+        <translation>Rapporten hittar stötar först i slutet av ett steg; ett mindre steg minskar felet.</translation>
+    </message>
+    <message>
+        <source>Explicit Euler gains energy at every step on a spring (dt ω₀ = %1): choose symplectic Euler, Verlet, RK4 or implicit Euler.</source>
+        <translation>Explicit Euler vinner energi i varje steg på en fjäder (dt ω₀ = %1): välj symplektisk Euler, Verlet, RK4 eller implicit Euler.</translation>
+    </message>
+    <message>
+        <source>dt ω₀ = %1, and %2 is stable only below %3: choose a step below %4 %5, or implicit Euler.</source>
+        <translation>dt ω₀ = %1, och %2 är stabil bara under %3: välj ett steg under %4 %5, eller implicit Euler.</translation>
+    </message>
+    <message>
+        <source>Explicit Euler adds energy at every step: choose symplectic Euler, Verlet or event-driven.</source>
+        <translation>Explicit Euler tillför energi i varje steg: välj symplektisk Euler, Verlet eller händelsestyrd.</translation>
+    </message>
+    <message>
+        <source>Choose impacts located inside the step, or a smaller step.</source>
+        <translation>Välj stötar lokaliserade inom steget, eller ett mindre steg.</translation>
+    </message>
+    <message>
+        <source>Choose a smaller step.</source>
+        <translation>Välj ett mindre steg.</translation>
+    </message>
+    <message>
+        <source>The report&apos;s bounce limit stopped the ball at t = %1: after more than %2 bounces its position and velocity are set to zero (Appendix A)</source>
+        <translation>Rapportens studsgräns stoppade bollen vid t = %1: efter fler än %2 studsar sätts dess position och hastighet till noll (bilaga A)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s bounce limit stopped the ball at t = %1: after more than %2 floor and wall contacts its position and velocity are set to zero (Appendix B)</source>
+        <translation>Rapportens studsgräns stoppade bollen vid t = %1: efter fler än %2 golv- och väggkontakter sätts dess position och hastighet till noll (bilaga B)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s counter stopped both balls at t = %1: after more than %2 contacts and swaps both velocities are set to zero, and the positions go on from them (Appendix C)</source>
+        <translation>Rapportens räknare stoppade båda bollarna vid t = %1: efter fler än %2 kontakter och byten sätts båda hastigheterna till noll, och positionerna räknas vidare från dem (bilaga C)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s bounce limit stopped the motion at t = %1 (Appendix D)</source>
+        <translation>Rapportens studsgräns stoppade rörelsen vid t = %1 (bilaga D)</translation>
+    </message>
+</context>
+<context>
     <name>QMainWindow</name>
     <message>
         <source>&amp;Tools</source>
@@ -687,6 +838,30 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>The physical model ignores the report-only constants (%1).</source>
         <translation>Den fysikaliska modellen bortser från konstanterna som bara rapportmodellen har (%1).</translation>
     </message>
+    <message>
+        <source>report: explicit Euler (eqs 2.12-2.16)</source>
+        <translation>rapporten: explicit Euler (ekv. 2.12-2.16)</translation>
+    </message>
+    <message>
+        <source>report: semi-implicit Euler step (eqs 2.18-2.22)</source>
+        <translation>rapporten: semi-implicit Euler-steg (ekv. 2.18-2.22)</translation>
+    </message>
+    <message>
+        <source>report: one update per frame (Appendix D)</source>
+        <translation>rapporten: en uppdatering per bildruta (bilaga D)</translation>
+    </message>
+    <message>
+        <source>report: at the step&apos;s end (Appendix A)</source>
+        <translation>rapporten: i slutet av steget (bilaga A)</translation>
+    </message>
+    <message>
+        <source>report: at the step&apos;s end, one face a step (Appendix B)</source>
+        <translation>rapporten: i slutet av steget, en yta per steg (bilaga B)</translation>
+    </message>
+    <message>
+        <source>report: at the end of each frame (Appendix D)</source>
+        <translation>rapporten: i slutet av varje bildruta (bilaga D)</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StabilityDialog</name>
@@ -944,6 +1119,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>All %1 equations shown. Next opens the next stage.</source>
         <translation>Alla %1 ekvationer visas. Nästa öppnar nästa etapp.</translation>
     </message>
+    <message>
+        <source>Preset: %1</source>
+        <translation>Förinställning: %1</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StatusReadout</name>
@@ -1006,6 +1185,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>E = -</source>
         <translation>E = -</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Detaljer</translation>
+    </message>
+    <message>
+        <source>The whole message: what happened, the rule behind it and what to change</source>
+        <translation>Hela meddelandet: vad som hände, regeln bakom det och vad man kan ändra</translation>
+    </message>
+    <message>
+        <source>ball %1 rests %2 %3 below the floor, where the floor rule of Appendix B put it in the step the velocities were zeroed, so its potential energy, and E/m, are below zero</source>
+        <translation>boll %1 vilar %2 %3 under golvet, där golvregeln i bilaga B placerade den i steget då hastigheterna nollställdes, så dess lägesenergi, och E/m, är under noll</translation>
+    </message>
+    <message>
+        <source>%1 of %2 balls lie on the floor with a velocity but do not move: Appendix D updates only balls above the floor, so a ball keeps the velocity it reached the floor with, and the kinetic energy and momentum charts go on counting it</source>
+        <translation>%1 av %2 bollar ligger på golvet med en hastighet men rör sig inte: bilaga D uppdaterar bara bollar ovanför golvet, så en boll behåller hastigheten den nådde golvet med, och diagrammen för rörelseenergi och rörelsemängd fortsätter att räkna med den</translation>
     </message>
 </context>
 <context>
@@ -1223,6 +1418,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>t = %1 of %2 %3 (looking back: Play goes on from here)</source>
         <translation>t = %1 av %2 %3 (tillbakablick: Spela fortsätter härifrån)</translation>
+    </message>
+    <message>
+        <source>%1× real time</source>
+        <translation>%1× realtid</translation>
     </message>
 </context>
 <context>
@@ -1859,14 +2058,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Rapportens etapp 2 (avsnitt 2.2.2, figur 2.6 och 2.7): en boll som kastas från (2, 20, 2) m med (10, 0, 15) m/s i en kub utan tak med sidan 300 m, g = 9.82 m/s^2, 6000 steg om 0.01 s. Golv och väggar vänder hastigheten längs sin axel och behåller andelen k = 0.9 av den (ekv. 2.17); efter fler än 50 kontakter stoppar rapportens räknare bollen.</translation>
     </message>
     <message>
-        <source>Tunnelling: a coarse step jumps past the wall</source>
-        <translation>Tunnling: ett grovt steg hoppar förbi väggen</translation>
-    </message>
-    <message>
-        <source>A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the box. Impacts are looked for only at the end of each step, as the report does, so the step from x = 270 m lands at x = 330 m, 30 m beyond the wall at x = 300 m, before the impact is noticed: the step jumped past the wall. Set impacts to located, or the integrator to event, and the impact time is solved inside the step, so the ball turns exactly at the wall.</source>
-        <translation>En snabb boll (240 m/s längs x) och ett grovt steg på 0.25 s: ett steg täcker 60 m, en femtedel av kuben. Stötar söks bara i slutet av varje steg, som rapporten gör, så steget från x = 270 m landar i x = 330 m, 30 m bortom väggen vid x = 300 m, innan stöten märks: steget hoppade förbi väggen. Välj stötar lokaliserade (located) eller integratorn event, så löses stöttidpunkten inne i steget och bollen vänder exakt vid väggen.</translation>
-    </message>
-    <message>
         <source>Stage 4 with the 200 balls of Figure 3.1</source>
         <translation>Etapp 4 med de 200 bollarna i figur 3.1</translation>
     </message>
@@ -1989,6 +2180,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>start angular velocity of ball 2 (x, y, z), right-hand rule</source>
         <translation>boll 2:s vinkelhastighet vid start (x, y, z), högerhandsregeln</translation>
+    </message>
+    <message>
+        <source>Late impacts: a coarse step is put back on the wall</source>
+        <translation>Sena stötar: ett grovt steg sätts tillbaka på väggen</translation>
+    </message>
+    <message>
+        <source>A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the box. Impacts are looked for only at the end of each step, as the report does: the step from x = 270 m ends at x = 330 m, 30 m beyond the wall at x = 300 m, and the impact found there puts the ball back on the wall and turns it at t = 1.25 s, where it should have turned at t = 1.125 s. The ball never shows beyond the wall, but every such impact comes up to a step late: at t = 1.25 s it is on the wall instead of 27 m back from it. Set impacts to located, or the integrator to event, and the impact time is solved inside the step. Balls that pass right through each other between two steps: see the Tunnelling preset of stage 3.</source>
+        <translation>En snabb boll (240 m/s längs x) och ett grovt steg på 0.25 s: ett steg täcker 60 m, en femtedel av lådan. Stötar söks bara i slutet av varje steg, som rapporten gör: steget från x = 270 m slutar vid x = 330 m, 30 m bortom väggen vid x = 300 m, och stöten som hittas där sätter tillbaka bollen på väggen och vänder den vid t = 1.25 s, där den borde ha vänt vid t = 1.125 s. Bollen syns aldrig bortom väggen, men varje sådan stöt kommer upp till ett steg för sent: vid t = 1.25 s står den på väggen i stället för 27 m tillbaka från den. Välj lokaliserade stötar, eller den händelsestyrda integratorn, så löses stöttiden inom steget. Bollar som går rakt igenom varandra mellan två steg: se förinställningen Tunnling i etapp 3.</translation>
+    </message>
+    <message>
+        <source>Tunnelling: two balls pass through each other between two steps</source>
+        <translation>Tunnling: två bollar går igenom varandra mellan två steg</translation>
+    </message>
+    <message>
+        <source>Two balls of radius 5 m fly head-on at 25 m/s each, gravity off, with a coarse step of 0.5 s and impacts looked for only at the end of each step. At t = 5 s their centres are 12.5 m apart, 2.5 m short of touching; one step later they are 12.5 m apart again, each on the other&apos;s side: they passed through each other inside the step, and no step end saw them overlap. The health check pauses the run there. Set impacts to located and the contact at t = 5.05 s is solved inside the step: the balls bounce back.</source>
+        <translation>Två bollar med radien 5 m flyger rakt mot varandra med 25 m/s var, utan tyngdkraft, med ett grovt steg på 0.5 s och stötar som söks bara i slutet av varje steg. Vid t = 5 s är deras centrum 12.5 m från varandra, 2.5 m från att nudda; ett steg senare är de åter 12.5 m från varandra, var och en på den andras sida: de gick igenom varandra inom steget, och inget stegslut såg dem överlappa. Hälsokontrollen pausar körningen där. Välj lokaliserade stötar så löses kontakten vid t = 5.05 s inom steget: bollarna studsar tillbaka.</translation>
     </message>
 </context>
 <context>

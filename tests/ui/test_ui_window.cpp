@@ -147,12 +147,14 @@ private slots:
         QTest::newRow("out of range") << int(SceneId::Bounce1d) << "k"
                                       << "2"
                                       << "k: 2 is outside";
+        // The fields take only what can begin a number ("high" cannot be typed): what is
+        // left to refuse is a number begun and not finished, or one beyond a double.
         QTest::newRow("not a number") << int(SceneId::Bounce1d) << "h0"
-                                      << "high"
-                                      << "h0: 'high'";
+                                      << "1e"
+                                      << "h0: '1e' is not a number";
         QTest::newRow("not finite") << int(SceneId::Box3d) << "g"
-                                    << "inf"
-                                    << "g: 'inf'";
+                                    << "1e999"
+                                    << "g: '1e999' is not a finite number";
         QTest::newRow("outside the box") << int(SceneId::Box3d) << "p0"
                                          << "400,5,5"
                                          << "outside the box";
@@ -191,15 +193,25 @@ private slots:
         QVERIFY(w.runOptions()->errorText().contains("one frame"));
         QVERIFY(w.statusBar()->currentMessage().contains("one frame"));
         QVERIFY(!w.controller().spec().dt.has_value());
-        QCOMPARE(w.findChild<QLineEdit*>("dtField")->text(), QString());
+        // The refused entry stays in red until it is fixed or reverted (Esc).
+        QLineEdit* dt = w.findChild<QLineEdit*>("dtField");
+        QCOMPARE(dt->text(), QString("0.5"));
+        QVERIFY(dt->property("refused").toBool());
+        dt->setFocus();
+        QTest::keyClick(dt, Qt::Key_Escape);
+        QCOMPARE(dt->text(), QString());
+        QVERIFY(!dt->property("refused").toBool());
+        QCOMPARE(w.runOptions()->errorText(), QString());
     }
 
     void modelAndIntegratorListsComeFromTheCore()
     {
         MainWindow w;
         QComboBox* integrators = w.runOptions()->integratorBox();
-        QCOMPARE(integrators->count(), int(ab::allIntegrators().size()));
+        // The core's integrators, and while the report model runs, its own scheme first.
+        QCOMPARE(integrators->count(), int(ab::allIntegrators().size()) + 1);
         QVERIFY(!integrators->isEnabled()); // the report model has one scheme per stage
+        QCOMPARE(integrators->currentIndex(), 0);
         QCOMPARE(w.runOptions()->modelBox()->count(), int(ab::allModels().size()));
     }
 
@@ -238,6 +250,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.showScene(SceneId::Box3d);
+        w.controller().setSpeed(1.0); // real time, not the stage's 10x: a few frames a step
         auto lastTime = [&](ab::ui::ChartKind kind) {
             const QList<QPointF> points = w.charts()->chart(kind)->line(0)->points();
             return points.isEmpty() ? -1.0 : points.back().x();

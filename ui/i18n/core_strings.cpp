@@ -260,13 +260,24 @@ const char* const listed[] = {
                               "2) m at (10, 0, 15) m/s inside an open-top box of side 300 m, g = 9.82 m/s^2, 6000 "
                               "steps of 0.01 s. Floor and walls reverse the velocity along their axis and keep k = 0.9 "
                               "of it (eq 2.17); after more than 50 contacts the report's counter stops the ball."),
-    QT_TRANSLATE_NOOP("core", "Tunnelling: a coarse step jumps past the wall"),
+    QT_TRANSLATE_NOOP("core", "Late impacts: a coarse step is put back on the wall"),
     QT_TRANSLATE_NOOP("core",
                       "A fast ball (240 m/s along x) and a coarse step of 0.25 s: one step covers 60 m, a fifth of the "
-                      "box. Impacts are looked for only at the end of each step, as the report does, so the step from "
-                      "x = 270 m lands at x = 330 m, 30 m beyond the wall at x = 300 m, before the impact is noticed: "
-                      "the step jumped past the wall. Set impacts to located, or the integrator to event, and the "
-                      "impact time is solved inside the step, so the ball turns exactly at the wall."),
+                      "box. Impacts are looked for only at the end of each step, as the report does: the step from x = "
+                      "270 m ends at x = 330 m, 30 m beyond the wall at x = 300 m, and the impact found there puts the "
+                      "ball back on the wall and turns it at t = 1.25 s, where it should have turned at t = 1.125 s. "
+                      "The ball never shows beyond the wall, but every such impact comes up to a step late: at t = "
+                      "1.25 s it is on the wall instead of 27 m back from it. Set impacts to located, or the "
+                      "integrator to event, and the impact time is solved inside the step. Balls that pass right "
+                      "through each other between two steps: see the Tunnelling preset of stage 3."),
+    QT_TRANSLATE_NOOP("core", "Tunnelling: two balls pass through each other between two steps"),
+    QT_TRANSLATE_NOOP("core",
+                      "Two balls of radius 5 m fly head-on at 25 m/s each, gravity off, with a coarse step of 0.5 s "
+                      "and impacts looked for only at the end of each step. At t = 5 s their centres are 12.5 m apart, "
+                      "2.5 m short of touching; one step later they are 12.5 m apart again, each on the other's side: "
+                      "they passed through each other inside the step, and no step end saw them overlap. The health "
+                      "check pauses the run there. Set impacts to located and the contact at t = 5.05 s is solved "
+                      "inside the step: the balls bounce back."),
     QT_TRANSLATE_NOOP("core", "Stage 4 with the 200 balls of Figure 3.1"),
     QT_TRANSLATE_NOOP("core", "The report's WebGL model with the 200 balls its Figure 3.1 shows (its code starts 150). "
                               "Everything else is as in the report: radius 1, a box 100 wide, one update per frame."),

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "parameter_panel.h"
 
+#include "number_field.h"
+
 #include "ui/i18n/core_text.h"
 
 #include <QFormLayout>
@@ -67,14 +69,16 @@ QString ParameterPanel::tooltip(const ParamSpec& spec)
     const QString unit = prettyUnit(spec.unit);
     return QStringLiteral("<b>%1</b> (%2): %3<br>%4 %5<br>%6 %7 %8<br>%9 %10")
         .arg(qs(spec.symbol).toHtmlEscaped(), qs(spec.key).toHtmlEscaped(), coreText(spec.meaning).toHtmlEscaped(),
-             tr("Report:"), coreText(spec.equation).toHtmlEscaped(), tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(),
-             unit.toHtmlEscaped(), tr("Report value:"))
+             tr("Report:"), coreText(spec.equation).toHtmlEscaped(), tr("Range:"),
+             qs(formatRange(spec)).toHtmlEscaped(), unit.toHtmlEscaped(), tr("Report value:"))
         .arg(qs(formatValue(spec, spec.defaultValue)).toHtmlEscaped());
 }
 
 void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const ParamValues& values)
 {
     scene_ = &scene;
+    refused_.clear(); // another stage or model: its own fields
+    pending_.clear();
     while (form_->rowCount() > 0)
         form_->removeRow(0);
     fields_.clear();
@@ -102,7 +106,14 @@ void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const Par
         labels_[spec.key] = label;
         const std::string key = spec.key;
         connect(field, &QLineEdit::editingFinished, this, [this, key] { edited(key); });
-        connect(field, &QLineEdit::textEdited, this, [field] { setInvalid(field, false); });
+        auto* number = new NumberField(field, spec.kind == ParamKind::Vector    ? NumberKind::Vector
+                                              : spec.kind == ParamKind::Integer ? NumberKind::Integer
+                                                                                : NumberKind::Real);
+        connect(number, &NumberField::done, this, [this, key] {
+            if (!refused_.count(key)) // a refused entry keeps the keys, to be fixed
+                emit editDone();
+        });
+        connect(number, &NumberField::reverted, this, [this, key] { revert(key); });
     }
     showValues(values);
 }
@@ -110,32 +121,45 @@ void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const Par
 void ParameterPanel::showValues(const ParamValues& values)
 {
     values_ = values;
+    refused_.erase(std::string()); // the panel-wide refusal was of the values replaced now
     for (const auto& [key, field] : fields_) {
         const std::size_t i = *values.indexOf(key);
         const ParamSpec& spec = values.table()[i];
-        field->setText(qs(formatValue(spec, values.raw(i))));
-        field->setCursorPosition(0);
+        if (!refused_.count(key)) { // a refused entry stays as typed, in red
+            field->setText(qs(formatValue(spec, values.raw(i))));
+            field->setCursorPosition(0);
+        }
         QFont f = labels_[key]->font();
         f.setBold(!values.isDefault(i)); // a changed constant stands out
         labels_[key]->setFont(f);
     }
-    clearRefusal();
+    showRefusals();
 }
 
-void ParameterPanel::clearRefusal()
+void ParameterPanel::showRefusals()
 {
     for (const auto& [key, field] : fields_)
-        setInvalid(field, false);
-    error_->clear();
-    error_->hide();
+        setInvalid(field, refused_.count(key) > 0);
+    QStringList lines;
+    for (const auto& [key, message] : refused_)
+        lines << tr("Not applied: %1").arg(message);
+    error_->setText(lines.join("\n"));
+    error_->setVisible(!lines.isEmpty());
+}
+
+void ParameterPanel::revert(const std::string& key)
+{
+    refused_.erase(key);
+    if (values_)
+        showValues(*values_);
 }
 
 void ParameterPanel::refuse(const std::string& key, const QString& message)
 {
-    if (QLineEdit* f = field(key))
-        setInvalid(f, true);
-    error_->setText(tr("Not applied: %1").arg(message));
-    error_->show();
+    const std::string which = !key.empty() ? key : pending_;
+    refused_[fields_.count(which) ? which : std::string()] = message;
+    pending_.clear();
+    showRefusals();
 }
 
 void ParameterPanel::edited(const std::string& key)
@@ -147,6 +171,7 @@ void ParameterPanel::edited(const std::string& key)
     try {
         proposed.parse(key, f->text().trimmed().toStdString());
         if (proposed == *values_) {
+            refused_.erase(key);  // the applied value again: fixed
             showValues(*values_); // unchanged (perhaps retyped): show it in its own format
             return;
         }
@@ -156,11 +181,19 @@ void ParameterPanel::edited(const std::string& key)
         refuse(key, QString::fromUtf8(e.what()));
         return;
     }
+    // Applied, the window shows the values (and this field is fixed); refused, it names
+    // the field through pending_.
+    refused_.erase(key);
+    pending_ = key;
     emit valuesProposed(proposed);
+    pending_.clear();
 }
 
 void ParameterPanel::restoreReportValues()
 {
+    refused_.clear();
+    pending_.clear();
+    emit reportValuesRequested();
     if (scene_)
         emit valuesProposed(scene_->defaults());
 }

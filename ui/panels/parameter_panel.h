@@ -28,9 +28,12 @@ public:
 
     // Rebuilds the fields for `scene` and `model` and shows `values`.
     void setScene(const SceneInfo& scene, ModelKind model, const ParamValues& values);
-    // Shows `values` (already applied) and clears any refusal.
+    // Shows `values` (already applied). A field whose entry was refused keeps that entry,
+    // in red, with its reason, until it is fixed (an entry that applies, or the applied
+    // value typed again), reverted (Esc) or "Report values" is pressed.
     void showValues(const ParamValues& values);
-    // Marks `key` (or the whole panel when empty) as refused with `message`.
+    // Marks `key` as refused with `message`; an empty key is the field last edited (the
+    // window refuses what the panel proposed), or the whole panel when none was.
     void refuse(const std::string& key, const QString& message);
 
     QLineEdit* field(const std::string& key) const;
@@ -40,11 +43,16 @@ public:
 signals:
     // A set of values that passed the table's and the scene's checks.
     void valuesProposed(const ab::ParamValues& values);
+    // "Report values" was pressed: every refusal of the stage's panels clears.
+    void reportValuesRequested();
+    // Enter in a field: the edit is applied or refused; the keyboard goes back to the view.
+    void editDone();
 
 private:
     void edited(const std::string& key);
     void restoreReportValues();
-    void clearRefusal();
+    void revert(const std::string& key);
+    void showRefusals();
     static QString tooltip(const ParamSpec& spec);
 
     const SceneInfo* scene_ = nullptr;
@@ -54,6 +62,8 @@ private:
     QPushButton* reportValues_;
     std::map<std::string, QLineEdit*> fields_;
     std::map<std::string, QLabel*> labels_;
+    std::map<std::string, QString> refused_; // field key (or "" for the panel) -> reason
+    std::string pending_;                    // the field whose edit the window is deciding on
 };
 
 } // namespace ab::ui

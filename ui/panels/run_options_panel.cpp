@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "run_options_panel.h"
 
+#include "number_field.h"
+
 #include "ui/i18n/core_text.h"
 
 #include <QComboBox>
@@ -10,6 +12,7 @@
 #include <QLineEdit>
 
 #include <algorithm>
+#include <tuple>
 
 namespace ab::ui {
 
@@ -31,6 +34,15 @@ void selectData(QComboBox* box, int value)
 
 // The compare list's item data: -1 for off, else model * 100 + integrator.
 constexpr int compareOff = -1;
+// The greyed boxes' entry naming the report model's own scheme.
+constexpr int reportOwn = -2;
+
+void setInvalid(QLineEdit* field, bool invalid)
+{
+    field->setStyleSheet(invalid ? QStringLiteral("QLineEdit { background: #fde2e2; border: 1px solid #c0392b; }")
+                                 : QString());
+    field->setProperty("refused", invalid);
+}
 int compareCode(ModelKind m, Integrator i)
 {
     return int(m) * 100 + (m == ModelKind::Report ? 0 : int(i));
@@ -128,8 +140,68 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
         box->setMinimumContentsLength(12);
         connect(box, &QComboBox::currentIndexChanged, this, [this] { propose(); });
     }
-    for (QLineEdit* field : {dt_, steps_})
+    for (QLineEdit* field : {dt_, steps_}) {
         connect(field, &QLineEdit::editingFinished, this, [this] { propose(); });
+        auto* number = new NumberField(field, field == dt_ ? NumberKind::Real : NumberKind::Integer);
+        connect(number, &NumberField::done, this, [this, field] {
+            if (!refused_.count(field) && windowRefusal_.isEmpty()) // a refused entry keeps the keys
+                emit editDone();
+        });
+        connect(number, &NumberField::reverted, this, [this, field] {
+            refused_.erase(field);
+            if (scene_)
+                showOptions(*scene_, shown_);
+        });
+    }
+}
+
+QString RunOptionsPanel::reportScheme(SceneId scene)
+{
+    switch (scene) {
+    case SceneId::Bounce1d:
+        return tr("report: explicit Euler (eqs 2.12-2.16)");
+    case SceneId::Box3d:
+    case SceneId::TwoBalls:
+        return tr("report: semi-implicit Euler step (eqs 2.18-2.22)");
+    case SceneId::ManyBalls:
+        return tr("report: one update per frame (Appendix D)");
+    }
+    return {};
+}
+
+QString RunOptionsPanel::reportImpacts(SceneId scene)
+{
+    switch (scene) {
+    case SceneId::Bounce1d:
+        return tr("report: at the step's end (Appendix A)");
+    case SceneId::Box3d:
+    case SceneId::TwoBalls:
+        return tr("report: at the step's end, one face a step (Appendix B)");
+    case SceneId::ManyBalls:
+        return tr("report: at the end of each frame (Appendix D)");
+    }
+    return {};
+}
+
+void RunOptionsPanel::showScheme()
+{
+    const bool report = shown_.model == ModelKind::Report;
+    const bool reportCompared = shown_.compare && shown_.compare->model == ModelKind::Report;
+    const QString scheme = scene_ ? reportScheme(scene_->id) : QString();
+    const QString impacts = scene_ ? reportImpacts(scene_->id) : QString();
+    for (auto [box, own, text] : {std::tuple{integrator_, report, scheme}, std::tuple{impacts_, report, impacts},
+                                  std::tuple{compareImpacts_, reportCompared, impacts}}) {
+        const int at = box->findData(reportOwn);
+        if (own) {
+            if (at < 0)
+                box->insertItem(0, text, reportOwn);
+            else
+                box->setItemText(at, text);
+            box->setCurrentIndex(0);
+        } else if (at >= 0) {
+            box->removeItem(at);
+        }
+    }
 }
 
 void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& options)
@@ -137,6 +209,7 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     updating_ = true;
     scene_ = &scene;
     shown_ = options;
+    showScheme(); // the report's entries go where the physical choices now show
     selectData(model_, int(options.model));
     selectData(integrator_, int(options.integrator));
     selectData(impacts_, int(options.impacts));
@@ -156,12 +229,39 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
         why += "\n" + tr("The physical model ignores the report-only constants (%1).").arg(reportOnly.join(", "));
     compare_->setToolTip(why);
     dt_->setPlaceholderText(tr("%1 (the model's step)").arg(qs(formatNumber(defaultDt(scene.id, options.model)))));
-    dt_->setText(options.dt ? qs(formatNumber(*options.dt)) : QString());
+    if (!refused_.count(dt_)) // a refused entry stays as typed, in red
+        dt_->setText(options.dt ? qs(formatNumber(*options.dt)) : QString());
     dtUnit_->setText(coreText(scene.timeUnit));
-    steps_->setText(QString::number(options.steps));
-    error_->hide();
+    if (!refused_.count(steps_))
+        steps_->setText(QString::number(options.steps));
+    windowRefusal_.clear();
+    showScheme();
+    showRefusals();
     updateEnabled();
     updating_ = false;
+}
+
+void RunOptionsPanel::showRefusals()
+{
+    QStringList lines;
+    for (QLineEdit* field : {dt_, steps_}) {
+        const auto it = refused_.find(field);
+        setInvalid(field, it != refused_.end());
+        if (it != refused_.end())
+            lines << tr("Not applied: %1").arg(it->second);
+    }
+    if (!windowRefusal_.isEmpty())
+        lines << tr("Not applied: %1").arg(windowRefusal_);
+    error_->setText(lines.join("\n"));
+    error_->setVisible(!lines.isEmpty());
+}
+
+void RunOptionsPanel::clearRefusals()
+{
+    refused_.clear();
+    windowRefusal_.clear();
+    if (scene_)
+        showOptions(*scene_, shown_);
 }
 
 void RunOptionsPanel::updateEnabled()
@@ -183,10 +283,17 @@ int RunOptionsPanel::compareIndex(const std::optional<RunVariant>& variant) cons
 
 void RunOptionsPanel::refuse(const QString& message)
 {
+    // A typed field whose text differs from the applied options took part: it stays red.
+    const QString appliedDt = shown_.dt ? qs(formatNumber(*shown_.dt)) : QString();
+    if (dt_->text().trimmed() != appliedDt)
+        refused_[dt_] = message;
+    else if (steps_->text().trimmed() != QString::number(shown_.steps))
+        refused_[steps_] = message;
     if (scene_)
         showOptions(*scene_, shown_);
-    error_->setText(tr("Not applied: %1").arg(message));
-    error_->show();
+    if (!refused_.count(dt_) && !refused_.count(steps_))
+        windowRefusal_ = message;
+    showRefusals();
 }
 
 QString RunOptionsPanel::errorText() const
@@ -198,38 +305,59 @@ void RunOptionsPanel::propose()
 {
     if (updating_ || !scene_)
         return;
-    RunOptions o;
+    RunOptions o = shown_;
+    const int integrator = integrator_->currentData().toInt(), impacts = impacts_->currentData().toInt();
     o.model = ModelKind(model_->currentData().toInt());
-    o.integrator = Integrator(integrator_->currentData().toInt());
-    o.impacts = ImpactMode(impacts_->currentData().toInt());
+    // The report's own entry stands for the physical choices kept for later.
+    if (integrator != reportOwn)
+        o.integrator = Integrator(integrator);
+    if (impacts != reportOwn)
+        o.impacts = ImpactMode(impacts);
+    o.compare.reset();
     if (const int code = compare_->currentData().toInt(); code != compareOff) {
         RunVariant v;
         v.model = ModelKind(code / 100);
         v.integrator = v.model == ModelKind::Report ? Integrator::SymplecticEuler : Integrator(code % 100);
+        const int impactsCode = compareImpacts_->currentData().toInt();
         v.impacts =
-            v.model == ModelKind::Report ? ImpactMode::Located : ImpactMode(compareImpacts_->currentData().toInt());
+            v.model == ModelKind::Report || impactsCode == reportOwn ? ImpactMode::Located : ImpactMode(impactsCode);
         // A step the comparison was given (a preset's) stays while its model stays.
         if (shown_.compare && shown_.compare->model == v.model)
             v.dt = shown_.compare->dt;
         o.compare = v;
     }
+    // Each typed field on its own: a refused one stays as typed and the applied value
+    // stands in for it, so the other choices still apply.
     try {
         const QString dt = dt_->text().trimmed();
+        o.dt.reset();
         if (!dt.isEmpty()) {
             o.dt = parseReal(dt.toStdString(), "dt");
             if (*o.dt <= 0.0)
                 throw InputError("dt: " + formatNumber(*o.dt) + " must be positive");
         }
+        refused_.erase(dt_);
+    } catch (const InputError& e) {
+        refused_[dt_] = QString::fromUtf8(e.what());
+        o.dt = shown_.dt;
+    }
+    try {
         o.steps = parseInteger(steps_->text().trimmed().toStdString(), "steps");
         if (o.steps < 1 || o.steps > 4'000'000'000LL)
             throw InputError("steps: " + std::to_string(o.steps) + " is outside [1, 4000000000]");
+        refused_.erase(steps_);
     } catch (const InputError& e) {
-        refuse(QString::fromUtf8(e.what()));
+        refused_[steps_] = QString::fromUtf8(e.what());
+        o.steps = shown_.steps;
+    }
+    windowRefusal_.clear();
+    showRefusals();
+    if (o.model == shown_.model && o.integrator == shown_.integrator && o.impacts == shown_.impacts &&
+        o.dt == shown_.dt && o.steps == shown_.steps && o.compare == shown_.compare) {
+        if (scene_ && !updating_) // a field typed back to its applied value shows in its own format
+            showOptions(*scene_, shown_);
         return;
     }
-    if (o.model == shown_.model && o.integrator == shown_.integrator && o.impacts == shown_.impacts &&
-        o.dt == shown_.dt && o.steps == shown_.steps && o.compare == shown_.compare)
-        return;
     emit optionsProposed(o);
 }
 

@@ -9,6 +9,7 @@
 
 #include <QWidget>
 
+#include <map>
 #include <optional>
 
 class QComboBox;
@@ -31,11 +32,18 @@ class RunOptionsPanel : public QWidget {
 public:
     explicit RunOptionsPanel(QWidget* parent = nullptr);
 
-    // Shows `options` for `scene` (already applied) and clears any refusal.
+    // Shows `options` for `scene` (already applied). A refused step or run length stays as
+    // typed, in red, with its reason, until it is fixed, reverted (Esc) or cleared.
     void showOptions(const SceneInfo& scene, const RunOptions& options);
-    // Marks the options as refused with `message` and shows the applied ones again.
+    // The window refused the options last proposed: the choices go back to the applied
+    // ones, a typed field that took part stays in red.
     void refuse(const QString& message);
+    // Every refused entry back to the applied options ("Report values").
+    void clearRefusals();
     QString errorText() const;
+    // What the greyed integrator and impact boxes say for the report model of `scene`.
+    static QString reportScheme(SceneId scene);
+    static QString reportImpacts(SceneId scene);
 
     QComboBox* modelBox() const { return model_; }
     QComboBox* integratorBox() const { return integrator_; }
@@ -46,10 +54,15 @@ public:
 
 signals:
     void optionsProposed(const ab::ui::RunOptions& options);
+    // Enter in a field: the keyboard goes back to the view.
+    void editDone();
 
 private:
     void propose();
     void updateEnabled();
+    void showRefusals();
+    // The report model's own scheme in the greyed boxes, the physical model's choices else.
+    void showScheme();
 
     const SceneInfo* scene_ = nullptr;
     RunOptions shown_;
@@ -63,6 +76,10 @@ private:
     QLabel* dtUnit_;
     QLabel* error_;
     bool updating_ = false;
+    // Refused typed entries: the field and why; an empty message stands for the window's
+    // refusal of a whole proposal (windowRefusal_).
+    std::map<QLineEdit*, QString> refused_;
+    QString windowRefusal_;
 };
 
 } // namespace ab::ui

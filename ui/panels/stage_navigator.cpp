@@ -190,10 +190,22 @@ void StageNavigator::retranslate()
     next_->setText(walking_ ? tr("Next >") : tr("Next stage >"));
 }
 
+void StageNavigator::setPreset(SceneId scene, const QString& name, const QString& description)
+{
+    presetScene_ = scene;
+    presetName_ = name;
+    presetDescription_ = description;
+    showText();
+}
+
 void StageNavigator::showText()
 {
     const SceneInfo& info = sceneInfo(current_);
-    text_->setHtml(describe(info, walking_ ? revealed_ : -1));
+    QString preset;
+    if (!presetName_.isEmpty() && presetScene_ == current_)
+        preset = QStringLiteral("<h3 style='margin-bottom:2px'>%1</h3><p style='margin-top:0'>%2</p><hr>")
+                     .arg(tr("Preset: %1").arg(presetName_.toHtmlEscaped()), presetDescription_.toHtmlEscaped());
+    text_->setHtml(preset + describe(info, walking_ ? revealed_ : -1));
     progress_->setVisible(walking_);
     if (!walking_)
         return;

@@ -35,6 +35,12 @@ public:
     // once every equation is shown. Core texts pass through the translator.
     static QString describe(const SceneInfo& scene, int revealed = -1);
 
+    // A preset's name and explanation, shown above the stage's own text while its stage
+    // is shown; an empty name clears it (the lecturer chose a stage).
+    void setPreset(SceneId scene, const QString& name, const QString& description);
+    QString presetName() const { return presetName_; }
+    QString presetDescription() const { return presetDescription_; }
+
     void setWalking(bool on);
     bool walking() const { return walking_; }
     int revealed() const;      // equations shown
@@ -66,6 +72,8 @@ private:
     SceneId current_ = SceneId::Bounce1d;
     bool walking_ = false;
     int revealed_ = 0;
+    SceneId presetScene_ = SceneId::Bounce1d;
+    QString presetName_, presetDescription_;
 };
 
 } // namespace ab::ui

@@ -1,12 +1,44 @@
 // SPDX-License-Identifier: MIT
 #include "status_readout.h"
 
+#include "ui/i18n/core_text.h"
+#include "ui/i18n/health_text.h"
+
+#include <QApplication>
+#include <QFrame>
 #include <QLabel>
+#include <QLayout>
 #include <QStatusBar>
+#include <QToolButton>
+#include <QVBoxLayout>
 
 #include <cmath>
 
 namespace ab::ui {
+
+namespace {
+
+enum class Shade { Severe, Notice };
+
+// A colour through the palette, not a style sheet: a style sheet would fix the label's
+// font at the size it had when set, and lecture mode's text size would stay after it.
+// Red and amber are darker on light themes and lighter on dark ones (4.5:1 either way).
+void setColour(QLabel* label, std::optional<Shade> shade)
+{
+    QPalette p; // only the text colour is the label's own; the theme gives the rest
+    if (shade) {
+        const bool dark = QApplication::palette().color(QPalette::Window).lightness() < 128;
+        const QColor colour = *shade == Shade::Severe ? (dark ? QColor(0xff, 0x8a, 0x80) : QColor(0xb0, 0x30, 0x20))
+                                                      : (dark ? QColor(0xff, 0xcc, 0x66) : QColor(0x8a, 0x5a, 0x00));
+        p.setColor(QPalette::WindowText, colour);
+    }
+    label->setPalette(p);
+    QFont bold; // only the weight: the size stays the application's, lecture mode's or not
+    bold.setBold(shade == Shade::Severe);
+    label->setFont(bold);
+}
+
+} // namespace
 
 QString formatDuration(double seconds)
 {
@@ -30,11 +62,18 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     };
     warning_ = new QLabel;
     warning_->setObjectName("statusWarning");
-    // A long finding is cut at the bar's edge (the tooltip holds it whole) rather than
-    // widening the window.
+    // The bar shows a message's first part; Details opens the whole of it.
     warning_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     warning_->setMinimumWidth(120);
     bar->addWidget(warning_, 1);
+    details_ = new QToolButton;
+    details_->setObjectName("statusDetails");
+    details_->setText(tr("Details"));
+    details_->setToolTip(tr("The whole message: what happened, the rule behind it and what to change"));
+    details_->setFocusPolicy(Qt::NoFocus);
+    details_->hide();
+    bar->addWidget(details_);
+    connect(details_, &QToolButton::clicked, this, &StatusReadout::showDetails);
     time_ = label("statusTime", 130);
     step_ = label("statusStep", 120);
     fps_ = label("statusFps", 70);
@@ -45,51 +84,139 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
                            "from the floor: per unit mass in the report model, with the masses in the physical one"));
 }
 
-void StatusReadout::setUnits(const QString& time, const QString& length)
+void StatusReadout::setRun(const RunSpec& spec)
 {
-    timeUnit_ = time;
-    lengthUnit_ = length;
+    spec_ = spec;
 }
 
-void StatusReadout::show(const EngineStatus& s)
+void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool lookingBack)
 {
-    time_->setText(tr("t = %1 %2").arg(QString::number(s.t, 'f', s.t < 100 ? 2 : 1), timeUnit_));
+    const bool back = lookingBack && shown;
+    const double t = back ? shown->t : s.t;
+    const double energy = back ? shown->scene.energy.total() : s.energy;
+    const SceneInfo* info = spec_ ? &sceneInfo(spec_->scene) : nullptr;
+    const QString timeUnit = info ? coreText(info->timeUnit) : QString();
+    const QString lengthUnit = info ? coreText(info->lengthUnit) : QString();
+    time_->setText(tr("t = %1 %2").arg(QString::number(t, 'f', t < 100 ? 2 : 1), timeUnit));
     step_->setText(tr("step %1").arg(formatDuration(s.stepSeconds)));
     const QString sq = QString::fromUtf8("\u00b2");
-    const QString value = QString::number(s.energy, 'g', 5);
+    const QString value = QString::number(energy, 'g', 5);
     if (!s.energyPerUnitMass) // the physical model's masses are in kg
-        energy_->setText(std::isfinite(s.energy) ? tr("E = %1 kg %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
-                                                 : tr("E = -"));
+        energy_->setText(std::isfinite(energy) ? tr("E = %1 kg %2%3/%4%3").arg(value, lengthUnit, sq, timeUnit)
+                                               : tr("E = -"));
     else
-        energy_->setText(std::isfinite(s.energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit_, sq, timeUnit_)
-                                                 : tr("E/m = -"));
+        energy_->setText(std::isfinite(energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit, sq, timeUnit)
+                                               : tr("E/m = -"));
+    const Message m = messageFor(s, shown, back);
+    full_ = m.full;
+    warning_->setText(m.headline);
+    warning_->setToolTip(m.full);
+    setColour(warning_, m.tone == Tone::Severe   ? std::optional(Shade::Severe)
+                        : m.tone == Tone::Notice ? std::optional(Shade::Notice)
+                                                 : std::nullopt);
+    details_->setVisible(m.full != m.headline);
+}
+
+StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Frame* shown, bool back) const
+{
+    if (!spec_)
+        return {};
+    const SceneInfo& info = sceneInfo(spec_->scene);
+    const double t = back ? shown->t : s.t;
+    // Only what the run had found by the moment shown.
+    const bool finding = s.health != diagnostics::Health::Ok && (!back || s.worst.t <= t + 1e-12);
+    const FindingText found = finding ? HealthText::describe(s.worst, info) : FindingText{};
     // The most serious first: a run that stopped, a failure the health check found (the
-    // run paused on it), the model's own notice, then a warning of the health check.
-    const QString health = QString::fromStdString(s.healthLine);
-    QString text, style;
-    if (!s.warning.empty()) {
-        text = tr("Stopped: %1").arg(QString::fromStdString(s.warning));
-        style = "color: #b03020; font-weight: bold;";
-    } else if (s.health == diagnostics::Health::Failed) {
-        text = s.pausedOnHealth ? tr("Paused: %1").arg(health) : health;
-        style = "color: #b03020; font-weight: bold;";
-    } else if (!s.notice.empty()) {
-        text = QString::fromStdString(s.notice);
-        style = "color: #9a6700;";
-    } else if (s.health == diagnostics::Health::Warning) {
-        text = health;
-        style = "color: #9a6700;";
-    } else if (s.finished) {
-        text = tr("The run is complete; Play starts it again");
+    // run paused on it), the report's own rules at work, then a warning of the check.
+    if (!s.warning.empty() && !back) {
+        if (finding && s.worst.finding.kind == diagnostics::FindingKind::NonFinite)
+            return {tr("Stopped: %1").arg(found.headline()), tr("Stopped: %1").arg(found.full()), Tone::Severe};
+        const QString text = tr("Stopped: %1").arg(QString::fromStdString(s.warning));
+        return {text, text, Tone::Severe};
     }
-    warning_->setText(text);
-    warning_->setStyleSheet(style);
-    // The line can be longer than the bar: the tooltip holds all of it, and the health
-    // check's finding stays readable there when a notice takes the bar.
-    QString tip = text;
-    if (!health.isEmpty() && !text.contains(health))
-        tip += (tip.isEmpty() ? QString() : QStringLiteral("\n")) + health;
-    warning_->setToolTip(tip);
+    if (finding && s.worst.level == diagnostics::Health::Failed) {
+        const QString paused = s.pausedOnHealth && !back ? tr("Paused: %1") : QStringLiteral("%1");
+        return {paused.arg(found.headline()), paused.arg(found.full()), Tone::Severe};
+    }
+    if (const auto rules = reportRulesAt(s, shown, back))
+        return {rules->section(QStringLiteral(": "), 0, 0), *rules, Tone::Notice};
+    if (finding)
+        return {found.headline(), found.full(), Tone::Notice};
+    if (s.finished && !back) {
+        const QString text = tr("The run is complete; Play starts it again");
+        return {text, text, Tone::Plain};
+    }
+    return {};
+}
+
+std::optional<QString> StatusReadout::reportRulesAt(const EngineStatus& s, const Frame* shown, bool back) const
+{
+    if (spec_->model != ModelKind::Report)
+        return std::nullopt;
+    const SceneInfo& info = sceneInfo(spec_->scene);
+    const double t = back ? shown->t : s.t;
+    QStringList parts;
+    if (s.haltedAt && *s.haltedAt <= t + 1e-12)
+        parts << HealthText::halted(info, spec_->params, *s.haltedAt);
+    if (shown && spec_->scene == SceneId::TwoBalls && s.haltedAt && *s.haltedAt <= t + 1e-12) {
+        // After the counter the positions go on from the zeroed velocities: the floor rule
+        // p = v dt, v = -k 0 + g dt (Appendix B) leaves a ball g dt^2 below the floor.
+        int lowest = -1;
+        for (int i = 0; i < shown->balls(); ++i)
+            if (shown->p[std::size_t(3 * i + 1)] < 0.0f &&
+                (lowest < 0 || shown->p[std::size_t(3 * i + 1)] < shown->p[std::size_t(3 * lowest + 1)]))
+                lowest = i;
+        if (lowest >= 0)
+            parts << tr("ball %1 rests %2 %3 below the floor, where the floor rule of Appendix B put it in the step "
+                        "the velocities were zeroed, so its potential energy, and E/m, are below zero")
+                         .arg(lowest + 1)
+                         .arg(figure(-double(shown->p[std::size_t(3 * lowest + 1)])), coreText(info.lengthUnit));
+    }
+    if (shown && spec_->scene == SceneId::ManyBalls) {
+        // Appendix D updates only balls above the floor: one that reaches it keeps the
+        // velocity it had, which the energy and momentum charts go on counting.
+        const float floor = float(-(spec_->params.real("box") / 2.0 - spec_->params.real("r")));
+        int kept = 0;
+        for (int i = 0; i < shown->balls(); ++i) {
+            const std::size_t k = std::size_t(3 * i);
+            if (shown->p[k + 1] <= floor && (shown->v[k] != 0.0f || shown->v[k + 1] != 0.0f || shown->v[k + 2] != 0.0f))
+                ++kept;
+        }
+        if (kept > 0)
+            parts << tr("%1 of %2 balls lie on the floor with a velocity but do not move: Appendix D updates only "
+                        "balls above the floor, so a ball keeps the velocity it reached the floor with, and the "
+                        "kinetic energy and momentum charts go on counting it")
+                         .arg(kept)
+                         .arg(shown->balls());
+    }
+    if (parts.isEmpty())
+        return std::nullopt;
+    return parts.join(QStringLiteral("; "));
+}
+
+void StatusReadout::showDetails()
+{
+    if (!popup_) {
+        popup_ = new QFrame(warning_->window(), Qt::Popup);
+        popup_->setObjectName("statusDetailsPopup");
+        popup_->setFrameShape(QFrame::Box);
+        auto* layout = new QVBoxLayout(popup_);
+        auto* text = new QLabel;
+        text->setObjectName("statusDetailsText");
+        text->setWordWrap(true);
+        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        layout->addWidget(text);
+    }
+    auto* text = popup_->findChild<QLabel*>("statusDetailsText");
+    text->setText(full_);
+    QWidget* window = warning_->window();
+    const int width = std::max(320, window->width() / 2);
+    popup_->setFixedWidth(width);
+    popup_->layout()->activate();
+    popup_->setFixedHeight(popup_->layout()->totalHeightForWidth(width));
+    const QPoint corner = warning_->mapToGlobal(QPoint(0, 0));
+    popup_->move(corner.x(), corner.y() - popup_->height() - 4);
+    popup_->show();
 }
 
 void StatusReadout::setFrameRate(double fps)
@@ -99,12 +226,17 @@ void StatusReadout::setFrameRate(double fps)
 
 QString StatusReadout::warningText() const
 {
-    return warning_->text();
+    return full_;
 }
 
 QString StatusReadout::timeText() const
 {
     return time_->text();
+}
+
+QString StatusReadout::energyText() const
+{
+    return energy_->text();
 }
 
 } // namespace ab::ui

@@ -1,17 +1,25 @@
 // SPDX-License-Identifier: MIT
-// The status bar's readings: simulated time, the cost of one step, frames per second,
-// the energy, and any warning from the run (a stopped run or a failed health check in
-// red, a notice from the model such as the report's bounce limit or a health warning in
-// amber).
+// The status bar's readings of the moment on screen (live, or the moment the time slider
+// looks back at): simulated time, the cost of one step, frames per second, the energy,
+// and what the run says about that moment: a stopped run or a failed health check in red,
+// the report's own rules at work (its bounce counter, balls that keep a velocity on the
+// floor, a ball left below the floor) or a health warning in amber. Findings and notices
+// are worded here, in the window's language and words, from the core's data; a message
+// longer than the bar shows its first part, and Details opens the whole of it.
 #pragma once
 
+#include "ui/sim/recording.h"
 #include "ui/sim/run_engine.h"
 
 #include <QObject>
 #include <QString>
 
+#include <optional>
+
 class QLabel;
 class QStatusBar;
+class QToolButton;
+class QFrame;
 
 namespace ab::ui {
 
@@ -20,19 +28,36 @@ class StatusReadout : public QObject {
 public:
     explicit StatusReadout(QStatusBar* bar);
 
-    void setUnits(const QString& time, const QString& length);
-    void show(const EngineStatus& status);
+    // The run the readings are of: its scene's units, model and constants.
+    void setRun(const RunSpec& spec);
+    // `shown` is the frame on screen; with `lookingBack` its time and energy are read,
+    // and only what the run had found by then is said.
+    void show(const EngineStatus& status, const Frame* shown = nullptr, bool lookingBack = false);
     void setFrameRate(double fps); // negative: no 3D view
-    QString warningText() const;
+    QString warningText() const;   // the whole message (also what Details shows)
     QString timeText() const;
+    QString energyText() const;
+    QToolButton* detailsButton() const { return details_; }
 
 private:
+    enum class Tone { Plain, Notice, Severe };
+    struct Message {
+        QString headline, full;
+        Tone tone = Tone::Plain;
+    };
+    Message messageFor(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
+    std::optional<QString> reportRulesAt(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
+    void showDetails();
+
     QLabel* time_;
     QLabel* step_;
     QLabel* fps_;
     QLabel* energy_;
     QLabel* warning_;
-    QString timeUnit_, lengthUnit_;
+    QToolButton* details_;
+    QFrame* popup_ = nullptr;
+    QString full_;
+    std::optional<RunSpec> spec_;
 };
 
 // "0.8 us", "12 ms", "1.3 s".

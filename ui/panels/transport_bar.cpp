@@ -7,6 +7,7 @@
 #include <QSlider>
 #include <QStyle>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ab::ui {
@@ -54,6 +55,7 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     speed_->setToolTip(tr("Simulated time per real second: 0.1x to 10x real time"));
     row->addWidget(speed_);
     speedLabel_ = new QLabel;
+    speedLabel_->setObjectName("speedLabel");
     speedLabel_->setMinimumWidth(44);
     row->addWidget(speedLabel_);
     row->addSpacing(12);
@@ -94,7 +96,13 @@ void TransportBar::setSpeed(double factor)
     updating_ = true;
     speed_->setValue(sliderFromSpeed(factor));
     updating_ = false;
-    speedLabel_->setText(QStringLiteral("%1x").arg(factor, 0, 'g', 2));
+    // In words, so the room knows what it is watching: "10× real time".
+    speedLabel_->setText(tr("%1× real time").arg(factor, 0, 'g', 2));
+}
+
+QString TransportBar::speedText() const
+{
+    return speedLabel_->text();
 }
 
 void TransportBar::setRecorded(double start, double end, const QString& unit)
@@ -120,6 +128,18 @@ void TransportBar::goLive()
     viewTime_.reset();
     updating_ = true;
     time_->setValue(timeSteps);
+    updating_ = false;
+    updateLabel();
+    emit viewTimeChanged(viewTime_);
+}
+
+void TransportBar::lookAt(double t)
+{
+    if (!(end_ > start_))
+        return;
+    viewTime_ = std::clamp(t, start_, end_);
+    updating_ = true;
+    time_->setValue(int(std::lround((*viewTime_ - start_) / (end_ - start_) * timeSteps)));
     updating_ = false;
     updateLabel();
     emit viewTimeChanged(viewTime_);

@@ -27,11 +27,14 @@ public:
     // The moment shown: nothing when live.
     std::optional<double> viewTime() const { return viewTime_; }
     void goLive();
+    // Shows the recorded moment `t` (clamped to the record), as a drag of the slider does.
+    void lookAt(double t);
 
     QPushButton* playButton() const { return play_; }
     QPushButton* stepButton() const { return step_; }
     QPushButton* resetButton() const { return reset_; }
     QSlider* speedSlider() const { return speed_; }
+    QString speedText() const;
     QSlider* timeSlider() const { return time_; }
 
     static double speedFromSlider(int value);

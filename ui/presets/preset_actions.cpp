@@ -4,6 +4,7 @@
 #include "ui/i18n/core_text.h"
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
+#include "ui/panels/stage_navigator.h"
 #include "ui/view/ball_view.h"
 
 #include <QChartView>
@@ -150,6 +151,8 @@ void applyPresetToWindow(MainWindow& window, const Preset& preset)
     if (const auto error = window.showSetup(spec, options))
         throw InputError(presetName(preset) + ": " + error->toStdString());
     showCharts(*window.charts(), charts);
+    // What the preset is about, in the navigator beside the stage it opens.
+    window.navigator()->setPreset(preset.scene, coreText(preset.name), coreText(preset.description));
     window.controller().selectBall(preset.view.selectedBall.value_or(0));
     if (BallView* view = window.view())
         placeCamera(*view, preset.view);

@@ -135,20 +135,9 @@ void WindowShell::setLanguage(Language language)
         return;
     installLanguage(language);
     std::unique_ptr<MainWindow> old = std::move(window_);
-    const RunSpec spec = old->controller().spec();
-    const RunOptions options{spec.model,
-                             spec.integrator,
-                             spec.impacts,
-                             spec.dt,
-                             old->controller().plannedSteps(),
-                             old->controller().comparison()};
     window_ = std::make_unique<MainWindow>();
     MainWindow& w = *window_;
-    w.showScene(old->scene());
-    w.applyOptions(options);
-    w.applyValues(spec.params);
-    w.controller().setSpeed(old->controller().speed());
-    w.controller().selectBall(old->controller().selectedBall());
+    w.takeRunOf(*old); // the run goes on: its time, recording, selection, camera and comparison
     w.setGeometry(old->geometry());
     const bool full = old->isFullScreen(), visible = old->isVisible();
     old->hide();

@@ -3,9 +3,9 @@
 // colour-blind-safe palette, and the Language menu.
 //
 // A language switch builds the window anew in the new language (every text is set
-// where it is built) and carries over the stage, its constants and run options, the
-// speed, the selected ball, the window's geometry, lecture mode and the looks. The run
-// starts again from its start state.
+// where it is built) and goes on with the same run (MainWindow::takeRunOf: every stage's
+// setup, the run's time, recording, comparison, speed and selection, the moment looked
+// back at, the camera), the window's geometry, lecture mode and the looks.
 #pragma once
 
 #include "ui/i18n/language.h"

@@ -123,6 +123,29 @@ void RunController::startEngine(std::unique_ptr<Simulation> sim, std::unique_ptr
     emit advanced();
 }
 
+void RunController::takeOver(RunController& other)
+{
+    retireEngine(engine_);
+    retireEngine(compare_);
+    spec_ = std::move(other.spec_);
+    steps_ = other.steps_;
+    layout_ = other.layout_;
+    engine_ = std::move(other.engine_);
+    variant_ = std::move(other.variant_);
+    compareSpec_ = std::move(other.compareSpec_);
+    compare_ = std::move(other.compare_);
+    compareStatus_ = other.compareStatus_;
+    compareForkTo_ = other.compareForkTo_;
+    speed_ = other.speed_;
+    selected_ = other.selected_;
+    other.status_ = {};
+    status_ = engine_ ? engine_->status() : EngineStatus{};
+    emit runReplaced();
+    emit speedChanged(speed_);
+    emit playingChanged(status_.playing);
+    emit advanced();
+}
+
 void RunController::play()
 {
     if (!engine_)

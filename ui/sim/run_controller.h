@@ -32,6 +32,10 @@ public:
     // With `compare`, the comparison run is built too; when the core refuses it the
     // InputError names the comparison ("compare with report: ...") and nothing changes.
     void setRun(const RunSpec& spec, long long steps, const std::optional<RunVariant>& compare = std::nullopt);
+    // Takes `other`'s run as it stands (its recording, time, comparison, speed and the
+    // followed ball; playing on if it played): a window rebuilt in another language goes
+    // on with the same run. `other` is left without a run. Emits runReplaced.
+    void takeOver(RunController& other);
     bool hasRun() const { return engine_ != nullptr; }
     const RunSpec& spec() const;
     bool comparing() const { return compare_ != nullptr; }

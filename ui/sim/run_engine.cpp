@@ -249,6 +249,8 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
         finish(failure.empty() ? "the state became non-finite" : failure);
         return;
     }
+    if (state_.halted && !status_.haltedAt)
+        status_.haltedAt = state_.t;
     if (state_.halted && status_.notice.empty())
         status_.notice = "the report's bounce limit stopped the motion at t = " + formatSignificant(state_.t, 6);
     // Rotate: the final state becomes the previous one, the new state the current one.
@@ -299,6 +301,7 @@ void RunEngine::publishHealth()
     const diagnostics::HealthStatus worst = health_->worst();
     status_.health = worst.level;
     status_.healthLine = worst.level == diagnostics::Health::Ok ? std::string() : worst.line();
+    status_.worst = worst;
 }
 
 void RunEngine::publishCurrent()
@@ -380,6 +383,7 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     status_.pausedOnHealth = false; // playing stays as resumeFrom and any later play() left it
     status_.warning.clear();
     status_.notice.clear();
+    status_.haltedAt.reset();
     issuesPublished_ = kNoneYet; // the re-taken steps' findings are published anew
     publishHealth();
     publishCurrent();

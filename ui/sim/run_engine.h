@@ -53,6 +53,8 @@ struct EngineStatus {
     std::string notice;                                   // from the model, e.g. the report's bounce limit reached
     diagnostics::Health health = diagnostics::Health::Ok; // the health check's worst finding so far
     std::string healthLine;                               // that finding: what happened, what to change
+    diagnostics::HealthStatus worst;                      // the same as data (the window words it)
+    std::optional<double> haltedAt;                       // when the report's counter stopped the motion (the notice)
     bool pausedOnHealth = false;    // the last pause was the health check's (cleared by play or a step)
     unsigned long long version = 0; // changes whenever the snapshot does
 };
