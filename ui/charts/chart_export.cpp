@@ -9,7 +9,7 @@
 #include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QPainter>
-#include <QSaveFile>
+#include <QBuffer>
 #include <QSvgGenerator>
 
 namespace ab::ui {
@@ -71,9 +71,11 @@ void exportChart(QChart* chart, const QString& path, QSize size)
         throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() +
                          "' (use .png or .svg)");
     checkWritable(path.toStdString());
-    QSaveFile file(path); // writes a temporary file and renames it on commit()
-    if (!file.open(QIODevice::WriteOnly))
-        throw InputError(path.toStdString() + ": cannot write (" + file.errorString().toStdString() + ")");
+    // Encoded in memory, then written through the one output path (core/io/atomic_file.h):
+    // every write checked, devices and links respected, nothing half-written.
+    QByteArray bytes;
+    QBuffer file(&bytes);
+    file.open(QIODevice::WriteOnly);
     if (suffix == "png") {
         if (!renderChart(chart, size).save(&file, "PNG"))
             throw InputError(path.toStdString() + ": PNG encoding failed");
@@ -89,8 +91,7 @@ void exportChart(QChart* chart, const QString& path, QSize size)
         staged.render(painter, size);
         painter.end();
     }
-    if (!file.commit())
-        throw InputError(path.toStdString() + ": write failed (" + file.errorString().toStdString() + ")");
+    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 } // namespace ab::ui
