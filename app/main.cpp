@@ -8,8 +8,8 @@
 #include "ui/presets/preset_actions.h"
 #include "ui/settings/window_settings.h"
 #include "ui/shell/window_shell.h"
-#include "ui/view/ball_view.h"
 #include "ui/theme/theme.h"
+#include "ui/view/ball_view.h"
 
 #include "core/io/atomic_file.h"
 #include "core/io/preset.h"
@@ -26,9 +26,9 @@
 #include <QTimer>
 
 #include <algorithm>
-#include <optional>
 #include <charconv>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -177,9 +177,10 @@ namespace {
 // the early parse, made before QApplication, lets them through.
 QStringList withoutQtOptions(const QStringList& args)
 {
-    static const QStringList withValue{"platform", "platformpluginpath", "platformtheme", "plugin", "qmljsdebugger",
-                                       "qwindowgeometry", "qwindowicon", "qwindowtitle", "session", "display",
-                                       "style", "stylesheet", "geometry", "title", "name"};
+    static const QStringList withValue{
+        "platform",        "platformpluginpath", "platformtheme", "plugin",  "qmljsdebugger",
+        "qwindowgeometry", "qwindowicon",        "qwindowtitle",  "session", "display",
+        "style",           "stylesheet",         "geometry",      "title",   "name"};
     static const QStringList flags{"reverse", "widgetcount", "nograb", "dograb", "sync"};
     QStringList kept;
     for (qsizetype i = 0; i < args.size(); ++i) {
@@ -335,9 +336,10 @@ std::optional<int> readOptions(const QStringList& arguments, Options& o)
             // Bounded: a measurement is at most an hour (a timer counts int milliseconds).
             o.measureSeconds = ab::parseReal(parser.value(measureOption).toStdString(), "--measure-frames");
             if (!(*o.measureSeconds >= 1.0 && *o.measureSeconds <= 3600.0))
-                throw ab::InputError(QApplication::translate("main", "--measure-frames: %1 is outside [1, 3600] seconds")
-                                         .arg(QString::fromStdString(ab::formatNumber(*o.measureSeconds)))
-                                         .toStdString());
+                throw ab::InputError(
+                    QApplication::translate("main", "--measure-frames: %1 is outside [1, 3600] seconds")
+                        .arg(QString::fromStdString(ab::formatNumber(*o.measureSeconds)))
+                        .toStdString());
         }
         if (parser.isSet(themeOption)) {
             o.theme = ab::ui::parseTheme(parser.value(themeOption));

@@ -239,8 +239,9 @@ void ParamValues::parse(std::string_view key, std::string_view text)
         constexpr long long exact = (1LL << 53) - 1;
         const long long n = parseInteger(text, s.key);
         if (n > exact || n < -exact)
-            throw InputError(s.key + ": " + quoted(text) + " is beyond 2^53 - 1 = 9007199254740991, the largest whole "
-                                                           "number kept exactly");
+            throw InputError(s.key + ": " + quoted(text) +
+                             " is beyond 2^53 - 1 = 9007199254740991, the largest whole "
+                             "number kept exactly");
         v[0] = static_cast<double>(n);
         break;
     }

@@ -6,8 +6,8 @@
 #include "core/io/atomic_file.h"
 #include "core/params.h"
 
-#include <QFileInfo>
 #include <QBuffer>
+#include <QFileInfo>
 
 #include <streambuf>
 

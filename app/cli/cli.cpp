@@ -35,8 +35,9 @@ const std::array commands{
             "                            --chart position|velocity|energy --out FILE.png|FILE.svg [--ball B]\n"
             "                            [--width W] [--height H] and the run options (B = 1 is the first ball)",
             chartCommand},
-    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
-                         "                            the stiff and extreme cases, one row per model and integrator",
+    Command{"stability",
+            "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+            "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},
     Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
             studyCommand},

@@ -81,8 +81,9 @@ ui::MotionTrack simulate(Simulation& sim, const RunSetup& setup, int ball, std::
     if (!healthy) {
         const double last = track.empty() ? sim.start().t : track.t().back();
         err << "amazeballs-cli: chart: warning: the state became non-finite "
-            << (track.empty() ? "at the start" : std::isfinite(last) ? "after t = " + formatNumber(last)
-                                                                       : std::string("once the time itself overflowed"))
+            << (track.empty()         ? "at the start"
+                : std::isfinite(last) ? "after t = " + formatNumber(last)
+                                      : std::string("once the time itself overflowed"))
             << "; the chart ends there\n";
     }
     return track;

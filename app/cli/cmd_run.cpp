@@ -82,7 +82,8 @@ int reportHealth(const diagnostics::HealthCheck& health, bool diverged, const St
         return 0;
     err << "amazeballs-cli: run: " << diagnostics::healthKey(worst.level) << ": " << worst.line();
     if (diverged)
-        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " " << sim.scene().timeUnit;
+        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " "
+            << sim.scene().timeUnit;
     err << "\n";
     return diverged ? 3 : 0;
 }

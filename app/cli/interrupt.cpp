@@ -17,7 +17,7 @@ extern "C" void onSignal(int sig)
         return;
     }
     removeTempFilesNow(); // the second signal: do not wait for the command
-    struct sigaction dfl{};
+    struct sigaction dfl {};
     dfl.sa_handler = SIG_DFL;
     sigemptyset(&dfl.sa_mask);
     ::sigaction(sig, &dfl, nullptr);
@@ -29,7 +29,7 @@ extern "C" void onSignal(int sig)
 void installInterruptHandler()
 {
     removeTempFilesOnSignals(false);
-    struct sigaction sa{};
+    struct sigaction sa {};
     sa.sa_handler = onSignal;
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = 0; // no SA_RESTART: a blocked write returns EINTR and the command sees the request

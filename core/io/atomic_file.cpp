@@ -37,7 +37,7 @@ fs::path followLinks(const fs::path& path)
 {
     fs::path at = path;
     for (int hops = 0; hops < 40; ++hops) {
-        struct stat st{};
+        struct stat st {};
         if (::lstat(at.c_str(), &st) != 0 || !S_ISLNK(st.st_mode))
             return at;
         std::error_code ec;
@@ -51,9 +51,9 @@ fs::path followLinks(const fs::path& path)
 
 // The target, checked: where it is, what it is, and what an existing file keeps.
 struct Target {
-    fs::path path;               // links followed
+    fs::path path;                       // links followed
     std::optional<struct stat> existing; // a regular file already there
-    bool direct = false;         // a device, FIFO or socket: written in place
+    bool direct = false;                 // a device, FIFO or socket: written in place
 };
 
 Target examine(const fs::path& named)
@@ -62,7 +62,7 @@ Target examine(const fs::path& named)
         throw InputError("output file: the name is empty");
     Target t{followLinks(named), std::nullopt, false};
     const std::string name = shown(named);
-    struct stat st{};
+    struct stat st {};
     if (::stat(t.path.c_str(), &st) == 0) {
         if (S_ISDIR(st.st_mode))
             throw InputError(name + ": is a folder, not a file");
@@ -145,7 +145,8 @@ struct OutputFile::Impl {
 
     void fail(int error)
     {
-        throw OutputError(writeFailure(name, error) + (target.direct || !target.existing ? "" : "; the old file is kept"));
+        throw OutputError(writeFailure(name, error) +
+                          (target.direct || !target.existing ? "" : "; the old file is kept"));
     }
 };
 
@@ -258,7 +259,7 @@ void checkWritable(const fs::path& path)
     if (t.direct) {
         // Opening a FIFO with a reader would hand it an end of file; a FIFO is checked
         // when it is written.
-        struct stat st{};
+        struct stat st {};
         if (::stat(t.path.c_str(), &st) == 0 && !S_ISFIFO(st.st_mode) && ::access(t.path.c_str(), W_OK) != 0)
             throw InputError(shown(path) + ": cannot write there (" + std::strerror(errno) + ")");
     }

@@ -53,7 +53,7 @@ InputFile::InputFile(const std::filesystem::path& path, const std::string& what,
             throw InputError(what + ": " + name + ": no such file");
         throw InputError(what + ": " + name + ": cannot read it (" + std::strerror(error) + ")");
     }
-    struct stat st{};
+    struct stat st {};
     if (::fstat(fd_, &st) != 0) {
         const int error = errno;
         ::close(fd_);

@@ -7,8 +7,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <unordered_set>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace ab::json {
 
@@ -281,8 +281,8 @@ private:
         double x = 0.0;
         const auto [end, ec] = std::from_chars(text_.data() + start, text_.data() + pos_, x);
         if (ec != std::errc() || end != text_.data() + pos_ || !std::isfinite(x))
-            failAt(start, "the number " + printable(text_.substr(start, pos_ - start)) +
-                              " is outside the range of a double");
+            failAt(start,
+                   "the number " + printable(text_.substr(start, pos_ - start)) + " is outside the range of a double");
         return Value::makeNumber(x);
     }
 

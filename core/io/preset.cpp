@@ -33,8 +33,8 @@
 #include "preset.h"
 
 #include "atomic_file.h"
-#include "input_file.h"
 #include "embedded_presets.h"
+#include "input_file.h"
 #include "json.h"
 
 #include <algorithm>

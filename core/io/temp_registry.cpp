@@ -68,7 +68,7 @@ namespace {
 extern "C" void removeAndDie(int sig)
 {
     removeTempFilesNow();
-    struct sigaction dfl{};
+    struct sigaction dfl {};
     dfl.sa_handler = SIG_DFL;
     sigemptyset(&dfl.sa_mask);
     ::sigaction(sig, &dfl, nullptr);
@@ -77,10 +77,10 @@ extern "C" void removeAndDie(int sig)
 
 void installUnlessIgnored(int sig)
 {
-    struct sigaction old{};
+    struct sigaction old {};
     if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN)
         return; // e.g. nohup's SIGHUP: stays ignored
-    struct sigaction sa{};
+    struct sigaction sa {};
     sa.sa_handler = removeAndDie;
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = SA_RESETHAND;

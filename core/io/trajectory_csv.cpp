@@ -45,7 +45,7 @@ void writeTrajectoryRows(std::ostream& out, const State& s)
 
 namespace {
 
-constexpr std::size_t kMaxLine = 1024;     // a row of %.17g numbers is under 200 characters
+constexpr std::size_t kMaxLine = 1024;       // a row of %.17g numbers is under 200 characters
 constexpr std::size_t kMaxBalls = 4'000'000; // many-balls' largest n
 
 // Lines of an --init file, each at most kMaxLine characters: memory stays bounded

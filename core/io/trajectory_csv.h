@@ -7,9 +7,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <string_view>
-#include <ostream>
 
 namespace ab {
 

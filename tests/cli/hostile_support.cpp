@@ -34,7 +34,7 @@ std::map<std::string, Snapshot> snapshot(const fs::path& dir)
 {
     std::map<std::string, Snapshot> files;
     for (const auto& e : fs::directory_iterator(dir)) {
-        struct stat st{};
+        struct stat st {};
         if (::lstat(e.path().c_str(), &st) != 0)
             continue;
         Snapshot s;
@@ -125,14 +125,26 @@ bool waitFor(pid_t pid, int& status, double seconds)
     return false;
 }
 
-bool ready(const Case& c, const fs::path& dir, pid_t pid)
+bool fileExists(const Case& c, const fs::path& dir)
 {
-    if (c.readyFile.empty())
-        return cpuSeconds(pid) >= 0.3; // past its start, inside the work
     for (const auto& e : fs::directory_iterator(dir))
         if (e.path().filename().string().rfind(c.readyFile, 0) == 0)
             return true;
     return false;
+}
+
+// Polls until the child is where the row means to signal it: its file made, then (or
+// without a file) some CPU time spent in the work.
+bool ready(const Case& c, const fs::path& dir, pid_t pid, double& cpuAtFile)
+{
+    if (c.readyFile.empty())
+        return cpuSeconds(pid) >= 0.3; // past its start, inside the work
+    if (cpuAtFile < 0.0) {
+        if (!fileExists(c, dir))
+            return false;
+        cpuAtFile = cpuSeconds(pid);
+    }
+    return cpuSeconds(pid) - cpuAtFile >= c.readyCpu;
 }
 
 std::string checkOutcome(const Case& c, int status, const std::string& err)
@@ -199,7 +211,8 @@ Outcome runCase(const Case& c)
     bool ended = false;
     if (c.signal) {
         const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-        while (!ready(c, dir, pid) && std::chrono::steady_clock::now() < until &&
+        double cpuAtFile = -1.0;
+        while (!ready(c, dir, pid, cpuAtFile) && std::chrono::steady_clock::now() < until &&
                !(ended = ::waitpid(pid, &status, WNOHANG) == pid))
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
         if (ended)

@@ -23,7 +23,7 @@ struct Case {
     }
 
     std::string name;
-    std::vector<std::string> args;                   // after the program name; run in the folder
+    std::vector<std::string> args;                    // after the program name; run in the folder
     std::function<void(const fs::path& dir)> prepare; // fixtures: files, FIFOs, links
     int status = 2;                                   // the exit status, when `dies` is 0
     int dies = 0;                                     // the signal the child must die of
@@ -33,9 +33,10 @@ struct Case {
     std::vector<std::string> absent;                  // files that must not exist afterwards
     std::function<std::string(const fs::path& dir, const std::string& err)> check; // "" or a problem
     std::string stdoutPath = "/dev/null";
-    long fileSizeLimit = -1;  // bytes, setrlimit(RLIMIT_FSIZE); -1 none
-    int signal = 0;           // sent once the child is ready
-    std::string readyFile;    // ready when a file whose name starts so exists; "" when busy on the CPU
+    long fileSizeLimit = -1; // bytes, setrlimit(RLIMIT_FSIZE); -1 none
+    int signal = 0;          // sent once the child is ready
+    std::string readyFile;   // ready when a file whose name starts so exists; "" when busy on the CPU
+    double readyCpu = 0.0;   // and then when it has used this many more CPU seconds (inside its work)
 };
 
 struct Outcome {

@@ -176,7 +176,7 @@ private slots:
                                            << "does not exist";
         QTest::newRow("output is a folder") << QStringList{"run", "bounce1d", "--out", "/tmp"} << "is a folder";
         QTest::newRow("missing init file") << QStringList{"run", "box3d", "--init", "/nonexistent.csv"}
-                                           << "--init: cannot read";
+                                           << "--init: /nonexistent.csv: no such file";
         QTest::newRow("stray argument") << QStringList{"list", "extra"} << "unexpected argument 'extra'";
     }
 

@@ -545,7 +545,7 @@ private slots:
     {
         const CliResult missing = cli({"run", "box3d", "--preset", "/nonexistent/preset.json"});
         QCOMPARE(missing.status, 2);
-        QVERIFY2(missing.err.find("preset /nonexistent/preset.json: cannot read the file") != std::string::npos,
+        QVERIFY2(missing.err.find("preset: /nonexistent/preset.json: no such file") != std::string::npos,
                  missing.err.c_str());
         QVERIFY(missing.out.empty());
         const CliResult wrongScene = cli({"run", "two-balls", "--preset", "box3d-report"});

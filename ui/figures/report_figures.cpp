@@ -5,12 +5,12 @@
 #include "ui/charts/nice_ticks.h"
 #include "ui/charts/scene_layout.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QPainter>
 #include <QPainterPath>
 #include <QRadialGradient>
-#include <QBuffer>
 #include <QSvgGenerator>
 
 #include <algorithm>
