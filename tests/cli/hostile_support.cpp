@@ -77,7 +77,8 @@ double cpuSeconds(pid_t pid)
 
 pid_t spawn(const Case& c, const fs::path& dir, const fs::path& errPath)
 {
-    // AB_HOSTILE_CLI runs the rows against another build (an older one, to see the cases fail).
+    // AB_HOSTILE_CLI runs the rows against another build (an older one, to see the cases
+    // fail; not as root: an older build replaces the device it is given).
     const char* program = std::getenv("AB_HOSTILE_CLI");
     std::vector<std::string> args{program ? program : AB_CLI_PATH};
     args.insert(args.end(), c.args.begin(), c.args.end());
