@@ -378,4 +378,27 @@ void addSignalCases(std::vector<Case>& c)
     c.push_back(bench);
 }
 
+void addWindowCases(std::vector<Case>& c)
+{
+#ifdef AB_WINDOW_PATH
+    auto window = [&](std::string name, std::vector<std::string> args, int status, int lines, std::string says,
+                      std::function<void(const fs::path&)> prepare = {}) {
+        Case k{"window, no display: " + name, std::move(args), std::move(prepare), status, 0, lines, std::move(says)};
+        k.window = true;
+        c.push_back(k);
+    };
+    window("an unknown option", {"--bogus"}, 2, 1, "bogus");
+    window("--version", {"--version"}, 0, 0, "");
+    window("--help", {"--help"}, 0, 0, "");
+    window("--measure-frames beyond its bound", {"--measure-frames", "3000000"}, 2, 1, "[1, 3600]");
+    window("--measure-frames not a number", {"--measure-frames", "abc"}, 2, 1, "not a number");
+    window("--measure-frames infinite", {"--measure-frames", "inf"}, 2, 1, "finite");
+    window("a missing preset", {"none.json"}, 2, 1, "no such file");
+    window("a FIFO preset", {"p.json"}, 2, 1, "FIFO", [](const fs::path& d) { fifo(d / "p.json"); });
+    window("a bad --set", {"--scene", "bounce1d", "--set", "g=abc"}, 2, 1, "not a number");
+#else
+    (void)c;
+#endif
+}
+
 } // namespace hostile

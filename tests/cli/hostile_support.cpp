@@ -80,7 +80,12 @@ pid_t spawn(const Case& c, const fs::path& dir, const fs::path& errPath)
     // AB_HOSTILE_CLI runs the rows against another build (an older one, to see the cases
     // fail; not as root: an older build replaces the device it is given).
     const char* program = std::getenv("AB_HOSTILE_CLI");
-    std::vector<std::string> args{program ? program : AB_CLI_PATH};
+#ifdef AB_WINDOW_PATH
+    const std::string path = c.window ? AB_WINDOW_PATH : program ? program : AB_CLI_PATH;
+#else
+    const std::string path = program ? program : AB_CLI_PATH;
+#endif
+    std::vector<std::string> args{path};
     args.insert(args.end(), c.args.begin(), c.args.end());
     std::vector<char*> argv;
     for (std::string& a : args)
@@ -92,6 +97,12 @@ pid_t spawn(const Case& c, const fs::path& dir, const fs::path& errPath)
     // The child: only what is safe after fork, then exec.
     if (::chdir(dir.c_str()) != 0)
         ::_exit(126);
+    if (c.window) {
+        // No display: a GUI application made before the options are read would abort.
+        ::unsetenv("DISPLAY");
+        ::unsetenv("WAYLAND_DISPLAY");
+        ::setenv("QT_QPA_PLATFORM", "xcb", 1);
+    }
     rlimit noCore{0, 0};
     ::setrlimit(RLIMIT_CORE, &noCore);
     if (c.fileSizeLimit >= 0) {

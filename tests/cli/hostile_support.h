@@ -32,6 +32,7 @@ struct Case {
     std::vector<std::string> untouched;               // files whose content and mode must stay
     std::vector<std::string> absent;                  // files that must not exist afterwards
     std::function<std::string(const fs::path& dir, const std::string& err)> check; // "" or a problem
+    bool window = false; // runs the window program, without a display (DISPLAY unset, platform xcb)
     std::string stdoutPath = "/dev/null";
     long fileSizeLimit = -1; // bytes, setrlimit(RLIMIT_FSIZE); -1 none
     int signal = 0;          // sent once the child is ready
@@ -54,6 +55,7 @@ void addTargetCases(std::vector<Case>& c);
 void addInputCases(std::vector<Case>& c);
 void addNumberCases(std::vector<Case>& c);
 void addSignalCases(std::vector<Case>& c);
+void addWindowCases(std::vector<Case>& c); // none in a build without the window
 
 bool chartKeysAgree();
 

@@ -26,6 +26,7 @@ std::vector<Case>& cases()
         addInputCases(c);
         addNumberCases(c);
         addSignalCases(c);
+        addWindowCases(c);
         return c;
     }();
     return all;
