@@ -4,6 +4,7 @@
 
 #include "../core/io/fd_stream.h"
 
+#include <exception>
 #include <iostream>
 #include <unistd.h>
 
@@ -14,5 +15,12 @@ int main(int argc, char** argv)
     // Every write to standard output is checked (a full disk, a closed pipe): the command
     // then stops with one line and exit status 4 (cli.h).
     ab::FdOStream out(STDOUT_FILENO, "standard output");
-    return ab::cli::run(std::vector<std::string>(argv + 1, argv + argc), out, std::cerr);
+    const int status = ab::cli::run(std::vector<std::string>(argv + 1, argv + argc), out, std::cerr);
+    // A command that failed after printing still hands over what it printed (a success has
+    // flushed and checked already).
+    try {
+        out.flush();
+    } catch (const std::exception&) {
+    }
+    return status;
 }
