@@ -188,7 +188,7 @@ OutputFile::OutputFile(const fs::path& path) : d_(std::make_unique<Impl>())
             ::fchmod(d_->fd, st->st_mode & 07777);
         }
     }
-    d_->stream.emplace(d_->fd, d_->name);
+    d_->stream.emplace(d_->fd, d_->name, d_->target.existing ? "; the old file is kept" : "");
 }
 
 OutputFile::~OutputFile()

@@ -11,7 +11,8 @@
 
 namespace ab {
 
-FdStreamBuf::FdStreamBuf(int fd, std::string name) : fd_(fd), name_(std::move(name)), buffer_(64 * 1024)
+FdStreamBuf::FdStreamBuf(int fd, std::string name, std::string suffix)
+    : fd_(fd), name_(std::move(name)), suffix_(std::move(suffix)), buffer_(64 * 1024)
 {
     setp(buffer_.data(), buffer_.data() + buffer_.size());
 }
@@ -27,7 +28,7 @@ void FdStreamBuf::writeAll(const char* data, std::size_t size)
         if (n <= 0) {
             const int error = n < 0 ? errno : ENOSPC; // write() of 0 bytes to a file: no room
             discard();
-            throw OutputError(writeFailure(name_, error));
+            throw OutputError(writeFailure(name_, error) + suffix_);
         }
         data += n;
         size -= static_cast<std::size_t>(n);

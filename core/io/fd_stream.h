@@ -15,8 +15,9 @@ namespace ab {
 
 class FdStreamBuf : public std::streambuf {
 public:
-    // `name` is how messages name the destination ("'out.csv'", "standard output").
-    FdStreamBuf(int fd, std::string name);
+    // `name` is how messages name the destination ("out.csv", "standard output"); `suffix`
+    // ends them ("; the old file is kept").
+    FdStreamBuf(int fd, std::string name, std::string suffix = {});
     // Writes what is buffered; throws OutputError when it cannot.
     void flushNow();
     // Drops what is buffered (after a failure, so that nothing is retried on destruction).
@@ -32,13 +33,14 @@ private:
     void writeAll(const char* data, std::size_t size);
 
     int fd_;
-    std::string name_;
+    std::string name_, suffix_;
     std::vector<char> buffer_;
 };
 
 class FdOStream : public std::ostream {
 public:
-    FdOStream(int fd, std::string name) : std::ostream(nullptr), buf_(fd, std::move(name))
+    FdOStream(int fd, std::string name, std::string suffix = {})
+        : std::ostream(nullptr), buf_(fd, std::move(name), std::move(suffix))
     {
         rdbuf(&buf_);
         exceptions(std::ios::badbit);

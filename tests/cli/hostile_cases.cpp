@@ -124,7 +124,7 @@ void addTargetCases(std::vector<Case>& c)
     Case full{"full disk: CSV refused in one line, the old file kept", quickRun("big.csv", "5000"),
               [](const fs::path& d) { writeText(d / "big.csv", precious); }, 4};
     full.fileSizeLimit = 4096;
-    full.says = "not written";
+    full.says = "the old file is kept";
     full.untouched = {"big.csv"};
     c.push_back(full);
 
