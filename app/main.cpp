@@ -8,7 +8,11 @@
 #include "ui/presets/preset_actions.h"
 #include "ui/settings/window_settings.h"
 #include "ui/shell/window_shell.h"
+#include "ui/theme/theme.h"
 #include "ui/view/ball_view.h"
+
+#include "core/io/atomic_file.h"
+#include "core/io/preset.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -24,6 +28,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -166,27 +171,93 @@ ab::RunVariant parseCompare(const QString& text)
 
 } // namespace
 
-int main(int argc, char** argv)
+namespace {
+
+// Qt's own options, which QApplication takes out of argv (-platform offscreen, -style ...):
+// the early parse, made before QApplication, lets them through.
+QStringList withoutQtOptions(const QStringList& args)
 {
-    // Every GL context the window makes is OpenGL 3.3 core (the view's shaders need it).
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    static const QStringList withValue{
+        "platform",        "platformpluginpath", "platformtheme", "plugin",  "qmljsdebugger",
+        "qwindowgeometry", "qwindowicon",        "qwindowtitle",  "session", "display",
+        "style",           "stylesheet",         "geometry",      "title",   "name"};
+    static const QStringList flags{"reverse", "widgetcount", "nograb", "dograb", "sync"};
+    QStringList kept;
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        const QString& a = args[i];
+        if (i > 0 && a.startsWith('-') && !a.startsWith(QLatin1String("--"))) {
+            const QString name = a.mid(1);
+            if (withValue.contains(name)) {
+                ++i; // and its value
+                continue;
+            }
+            if (flags.contains(name))
+                continue;
+        }
+        kept.push_back(a);
+    }
+    return kept;
+}
 
-    QApplication app(argc, argv);
-    QApplication::setApplicationName("Amazeballs");
-    QApplication::setOrganizationName("Amazeballs");
-    QApplication::setDesktopFileName("amazeballs");
-    QApplication::setWindowIcon(QIcon(":/icons/amazeballs.svg"));
-    QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
-    ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system())); // the Language menu changes it
+// A message on one line: no control character of the user's text reaches the terminal.
+std::string oneLine(const std::string& text)
+{
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7F) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", unsigned(u));
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
 
+// The window's options, read and checked before any window (or display) exists.
+struct Options {
+    std::optional<ab::Preset> preset;
+    std::optional<ab::SceneId> scene;
+    QStringList sets;
+    std::optional<ab::RunVariant> compare;
+    std::optional<double> speed, measureSeconds;
+    std::optional<ab::ui::Theme> theme;
+    bool play = false, fresh = false, lecture = false;
+};
+
+// A --set checked against the stage it is for, or, with no stage named, against the first
+// stage that has the parameter (the window checks it again against its stage).
+void checkAssignment(const QString& assignment, std::optional<ab::SceneId> scene)
+{
+    const std::string text = assignment.toStdString();
+    if (scene) {
+        ab::RunSpec(*scene).params.parseAssignment(text);
+        return;
+    }
+    const auto eq = text.find('=');
+    std::string name = text.substr(0, eq);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    for (const ab::SceneInfo* info : ab::allScenes()) {
+        ab::RunSpec spec(info->id);
+        if (eq != std::string::npos && spec.params.indexOf(name)) {
+            spec.params.parseAssignment(text);
+            return;
+        }
+    }
+    ab::RunSpec(ab::allScenes().front()->id).params.parseAssignment(text); // names what is wrong
+}
+
+// Reads the options; returns an exit status when the program ends here (--help,
+// --version: 0; a bad option or preset: 2, with one line on stderr).
+std::optional<int> readOptions(const QStringList& arguments, Options& o)
+{
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Bouncing and colliding balls, stage by stage."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
     const QCommandLineOption sceneOption("scene", QApplication::translate("main", "Start on stage KEY."), "KEY");
     const QCommandLineOption setOption("set", QApplication::translate("main", "Set a constant, NAME=VALUE."),
                                        "NAME=VALUE");
@@ -214,13 +285,159 @@ int main(int argc, char** argv)
     parser.addOptions({compareOption, sceneOption, setOption, playOption, speedOption, measureOption, presetOption,
                        freshOption, lectureOption, themeOption});
     parser.addPositionalArgument("FILE.json", QApplication::translate("main", "A preset file to open."), "[FILE.json]");
-    parser.process(app);
+    auto fail = [](const QString& why) {
+        std::fprintf(stderr, "amazeballs: %s\n", oneLine(why.toStdString()).c_str());
+        return 2;
+    };
+    if (!parser.parse(withoutQtOptions(arguments)))
+        return fail(parser.errorText());
+    if (parser.isSet(helpOption)) {
+        std::fputs(qPrintable(parser.helpText()), stdout);
+        return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : 4;
+    }
+    if (parser.isSet(versionOption)) {
+        std::printf("amazeballs %s\n", PROJECT_VERSION_TEXT);
+        return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : 4;
+    }
+    try {
+        const QStringList files = parser.positionalArguments();
+        if (files.size() > 1 || (files.size() == 1 && parser.isSet(presetOption)))
+            throw ab::InputError(
+                QApplication::translate("main", "give one preset: a FILE.json or --preset NAME|FILE").toStdString());
+        if (!files.isEmpty() || parser.isSet(presetOption)) {
+            if (parser.isSet(sceneOption))
+                throw ab::InputError(
+                    QApplication::translate("main", "--scene: a preset names its own stage; give one or the other")
+                        .toStdString());
+            o.preset = ab::loadPreset((files.isEmpty() ? parser.value(presetOption) : files.front()).toStdString());
+            o.scene = o.preset->scene;
+        }
+        if (parser.isSet(sceneOption)) {
+            const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
+            if (!scene)
+                throw ab::InputError(QApplication::translate("main", "--scene: unknown scene '%1'")
+                                         .arg(parser.value(sceneOption))
+                                         .toStdString());
+            o.scene = scene->id;
+        }
+        o.sets = parser.values(setOption);
+        for (const QString& assignment : o.sets)
+            checkAssignment(assignment, o.scene);
+        if (parser.isSet(compareOption))
+            o.compare = parseCompare(parser.value(compareOption));
+        if (parser.isSet(speedOption)) {
+            o.speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
+            if (*o.speed < 0.1 || *o.speed > 10.0)
+                throw ab::InputError(QApplication::translate("main", "--speed: %1 is outside [0.1, 10]")
+                                         .arg(QString::fromStdString(ab::formatNumber(*o.speed)))
+                                         .toStdString());
+        }
+        if (parser.isSet(measureOption)) {
+            // Bounded: a measurement is at most an hour (a timer counts int milliseconds).
+            o.measureSeconds = ab::parseReal(parser.value(measureOption).toStdString(), "--measure-frames");
+            if (!(*o.measureSeconds >= 1.0 && *o.measureSeconds <= 3600.0))
+                throw ab::InputError(
+                    QApplication::translate("main", "--measure-frames: %1 is outside [1, 3600] seconds")
+                        .arg(QString::fromStdString(ab::formatNumber(*o.measureSeconds)))
+                        .toStdString());
+        }
+        if (parser.isSet(themeOption)) {
+            o.theme = ab::ui::parseTheme(parser.value(themeOption));
+            if (!o.theme)
+                throw ab::InputError(QApplication::translate("main", "--theme: unknown theme '%1'")
+                                         .arg(parser.value(themeOption))
+                                         .toStdString());
+        }
+    } catch (const ab::InputError& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    o.play = parser.isSet(playOption);
+    o.fresh = parser.isSet(freshOption);
+    o.lecture = parser.isSet(lectureOption);
+    return std::nullopt;
+}
+
+void setApplicationNames()
+{
+    QCoreApplication::setApplicationName("Amazeballs");
+    QCoreApplication::setOrganizationName("Amazeballs");
+    QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
+}
+
+// What the options ask of the window, in order; false (with one line said) when the window
+// refuses a value.
+bool applyOptions(ab::ui::WindowShell& shell, ab::ui::MainWindow& window, const Options& o)
+{
+    try {
+        if (o.preset)
+            ab::ui::applyPresetToWindow(window, *o.preset);
+        else if (o.scene)
+            window.showScene(*o.scene);
+        if (!o.sets.isEmpty()) {
+            ab::ParamValues values = window.controller().spec().params;
+            for (const QString& assignment : o.sets)
+                values.parseAssignment(assignment.toStdString());
+            if (!window.applyValues(values))
+                throw ab::InputError(
+                    QApplication::translate("main", "--set: the values were refused (see the window's status bar)")
+                        .toStdString());
+        }
+        if (o.compare) {
+            ab::ui::RunOptions options = window.options();
+            options.compare = *o.compare;
+            if (!window.applyOptions(options))
+                throw ab::InputError(QApplication::translate("main", "--compare: refused: %1")
+                                         .arg(window.runOptions()->errorText())
+                                         .toStdString());
+        }
+        if (o.speed)
+            window.controller().setSpeed(*o.speed);
+        if (o.theme)
+            shell.setTheme(*o.theme);
+    } catch (const ab::InputError& e) {
+        std::fprintf(stderr, "amazeballs: %s\n", oneLine(e.what()).c_str());
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // A file being saved is removed, not left half-written, when the program is ended by a
+    // signal (core/io/atomic_file.h).
+    ab::removeTempFilesOnSignals(true);
+
+    // The options are read before the window's application exists, so that --help,
+    // --version and a bad option need no display.
+    Options options;
+    {
+        QCoreApplication early(argc, argv);
+        setApplicationNames();
+        ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system()));
+        if (const auto status = readOptions(QCoreApplication::arguments(), options))
+            return *status;
+    }
+
+    // Every GL context the window makes is OpenGL 3.3 core (the view's shaders need it).
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+
+    QApplication app(argc, argv);
+    setApplicationNames();
+    QApplication::setDesktopFileName("amazeballs");
+    QApplication::setWindowIcon(QIcon(":/icons/amazeballs.svg"));
+    ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system())); // the Language menu changes it
 
     ab::ui::WindowShell shell;
     ab::ui::MainWindow& window = shell.window(); // replaced by a language switch: use only before it
     QSettings store;
     bool placed = false;
-    if (!parser.isSet(freshOption)) {
+    if (!options.fresh) {
         // Each window remembers from its start; a language switch carries the setup over,
         // so the rebuilt window only needs a new recorder.
         auto remember = [&app, &store](ab::ui::MainWindow& w) {
@@ -237,72 +454,16 @@ int main(int argc, char** argv)
         QObject::connect(&shell, &ab::ui::WindowShell::windowReplaced, &shell,
                          [remember](ab::ui::MainWindow* w) { remember(*w); });
     }
-    try {
-        const QStringList files = parser.positionalArguments();
-        if (files.size() > 1 || (files.size() == 1 && parser.isSet(presetOption)))
-            throw ab::InputError(
-                QApplication::translate("main", "give one preset: a FILE.json or --preset NAME|FILE").toStdString());
-        if (!files.isEmpty() || parser.isSet(presetOption)) {
-            if (parser.isSet(sceneOption))
-                throw ab::InputError(
-                    QApplication::translate("main", "--scene: a preset names its own stage; give one or the other")
-                        .toStdString());
-            const QString preset = files.isEmpty() ? parser.value(presetOption) : files.front();
-            ab::ui::applyPresetToWindow(window, ab::loadPreset(preset.toStdString()));
-        }
-        if (parser.isSet(sceneOption)) {
-            const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
-            if (!scene)
-                throw ab::InputError(QApplication::translate("main", "--scene: unknown scene '%1'")
-                                         .arg(parser.value(sceneOption))
-                                         .toStdString());
-            window.showScene(scene->id);
-        }
-        if (!parser.values(setOption).isEmpty()) {
-            ab::ParamValues values = window.controller().spec().params;
-            for (const QString& assignment : parser.values(setOption))
-                values.parseAssignment(assignment.toStdString());
-            if (!window.applyValues(values))
-                throw ab::InputError(
-                    QApplication::translate("main", "--set: the values were refused (see the window's status bar)")
-                        .toStdString());
-        }
-        if (parser.isSet(compareOption)) {
-            ab::ui::RunOptions options = window.options();
-            options.compare = parseCompare(parser.value(compareOption));
-            if (!window.applyOptions(options))
-                throw ab::InputError(QApplication::translate("main", "--compare: refused: %1")
-                                         .arg(window.runOptions()->errorText())
-                                         .toStdString());
-        }
-        if (parser.isSet(speedOption)) {
-            const double speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
-            if (speed < 0.1 || speed > 10.0)
-                throw ab::InputError(QApplication::translate("main", "--speed: %1 is outside [0.1, 10]")
-                                         .arg(QString::fromStdString(ab::formatNumber(speed)))
-                                         .toStdString());
-            window.controller().setSpeed(speed);
-        }
-        if (parser.isSet(themeOption)) {
-            const auto theme = ab::ui::parseTheme(parser.value(themeOption));
-            if (!theme)
-                throw ab::InputError(QApplication::translate("main", "--theme: unknown theme '%1'")
-                                         .arg(parser.value(themeOption))
-                                         .toStdString());
-            shell.setTheme(*theme);
-        }
-    } catch (const ab::InputError& e) {
-        std::fprintf(stderr, "amazeballs: %s\n", e.what());
+    if (!applyOptions(shell, window, options))
         return 2;
-    }
     if (!placed)
         window.resize(1400, 900);
     window.show();
-    if (parser.isSet(lectureOption))
+    if (options.lecture)
         shell.lecture().setActive(true);
-    if (parser.isSet(measureOption))
-        measureFrames(window, std::max(1.0, parser.value(measureOption).toDouble()));
-    else if (parser.isSet(playOption))
+    if (options.measureSeconds)
+        measureFrames(window, *options.measureSeconds);
+    else if (options.play)
         window.controller().play();
     return app.exec();
 }

@@ -43,6 +43,18 @@ template <typename T> std::errc fromWholeText(std::string_view text, T& value)
     return ec;
 }
 
+// A number from_chars found out of range is too small when its exponent is negative or,
+// without one, when it has no non-zero digit before the point.
+bool underflows(std::string_view text)
+{
+    const auto e = text.find_first_of("eE");
+    if (e != std::string_view::npos)
+        return text.find('-', e) != std::string_view::npos;
+    const auto point = text.find('.');
+    const std::string_view whole = text.substr(0, point);
+    return whole.find_first_of("123456789") == std::string_view::npos;
+}
+
 } // namespace
 
 double parseReal(std::string_view text, std::string_view what)
@@ -51,7 +63,11 @@ double parseReal(std::string_view text, std::string_view what)
     const std::errc ec = fromWholeText(text, value);
     if (ec == std::errc::invalid_argument)
         throw InputError(std::string(what) + ": " + quoted(text) + " is not a number");
-    if (ec == std::errc::result_out_of_range || !std::isfinite(value))
+    if (ec == std::errc::result_out_of_range)
+        throw InputError(std::string(what) + ": " + quoted(text) +
+                         (underflows(text) ? " is too small for a double (below 4.9e-324); write 0 or a larger value"
+                                           : " is too large for a double (above 1.8e308)"));
+    if (!std::isfinite(value))
         throw InputError(std::string(what) + ": " + quoted(text) + " is not a finite number");
     return value;
 }
@@ -218,9 +234,17 @@ void ParamValues::parse(std::string_view key, std::string_view text)
     case ParamKind::Real:
         v[0] = parseReal(text, s.key);
         break;
-    case ParamKind::Integer:
-        v[0] = static_cast<double>(parseInteger(text, s.key));
+    case ParamKind::Integer: {
+        // Kept as a double: beyond 2^53 a whole number would be rounded, so it is refused.
+        constexpr long long exact = (1LL << 53) - 1;
+        const long long n = parseInteger(text, s.key);
+        if (n > exact || n < -exact)
+            throw InputError(s.key + ": " + quoted(text) +
+                             " is beyond 2^53 - 1 = 9007199254740991, the largest whole "
+                             "number kept exactly");
+        v[0] = static_cast<double>(n);
         break;
+    }
     case ParamKind::Vector:
         v = parseVector(text, s.key);
         break;

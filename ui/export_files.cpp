@@ -6,8 +6,8 @@
 #include "core/io/atomic_file.h"
 #include "core/params.h"
 
+#include <QBuffer>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <streambuf>
 
@@ -20,13 +20,13 @@ void saveImageAtomically(const QImage& image, const QString& path)
     if (image.isNull())
         throw InputError(path.toStdString() + ": there is no image to save");
     checkWritable(path.toStdString());
-    QSaveFile file(path); // written beside the target, renamed on commit()
-    if (!file.open(QIODevice::WriteOnly))
-        throw InputError(path.toStdString() + ": cannot write (" + file.errorString().toStdString() + ")");
+    // Encoded in memory, then written through the one output path (core/io/atomic_file.h).
+    QByteArray bytes;
+    QBuffer file(&bytes);
+    file.open(QIODevice::WriteOnly);
     if (!image.save(&file, "PNG"))
         throw InputError(path.toStdString() + ": PNG encoding failed");
-    if (!file.commit())
-        throw InputError(path.toStdString() + ": write failed (" + file.errorString().toStdString() + ")");
+    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 namespace {

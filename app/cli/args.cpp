@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "args.h"
 
+#include <algorithm>
+
 namespace ab::cli {
 
 std::string Args::positional(const std::string& what)
@@ -17,21 +19,24 @@ std::string Args::positional(const std::string& what)
 
 std::vector<std::string> Args::options(const std::string& name)
 {
+    // One pass that keeps what is not ours: linear in the arguments, however many there are.
     std::vector<std::string> values;
+    std::vector<std::string> rest;
+    rest.reserve(args_.size());
     const std::string flagText = "--" + name;
-    for (std::size_t i = 0; i < args_.size();) {
+    for (std::size_t i = 0; i < args_.size(); ++i) {
         if (args_[i] == flagText) {
             if (i + 1 >= args_.size())
                 throw InputError(flagText + ": missing value");
-            values.push_back(args_[i + 1]);
-            args_.erase(args_.begin() + static_cast<long>(i), args_.begin() + static_cast<long>(i) + 2);
-        } else if (args_[i].rfind(flagText + "=", 0) == 0) {
+            values.push_back(std::move(args_[++i]));
+        } else if (args_[i].size() > flagText.size() && args_[i].compare(0, flagText.size(), flagText) == 0 &&
+                   args_[i][flagText.size()] == '=') {
             values.push_back(args_[i].substr(flagText.size() + 1));
-            args_.erase(args_.begin() + static_cast<long>(i));
         } else {
-            ++i;
+            rest.push_back(std::move(args_[i]));
         }
     }
+    args_ = std::move(rest);
     return values;
 }
 
@@ -45,15 +50,10 @@ std::optional<std::string> Args::option(const std::string& name)
 
 bool Args::flag(const std::string& name)
 {
-    bool found = false;
-    for (std::size_t i = 0; i < args_.size();) {
-        if (args_[i] == "--" + name) {
-            found = true;
-            args_.erase(args_.begin() + static_cast<long>(i));
-        } else {
-            ++i;
-        }
-    }
+    const std::string flagText = "--" + name;
+    const auto kept = std::remove(args_.begin(), args_.end(), flagText);
+    const bool found = kept != args_.end();
+    args_.erase(kept, args_.end());
     return found;
 }
 

@@ -37,8 +37,8 @@ inline double median(std::vector<double> values)
 }
 
 // `start` puts the workload back at its first state, `step` advances all `balls` balls by
-// one step, `between` runs after each run (to poll for Ctrl+C); only the timed steps are
-// timed.
+// one step, `between` runs after every step (to poll for Ctrl+C: a flag read, negligible
+// beside a step of the balls); only the timed steps are timed.
 template <typename Start, typename Step, typename Between>
 BallStepTiming timeBallSteps(int balls, int warmup, int steps, int repeats, Start&& start, Step&& step,
                              Between&& between)
@@ -48,12 +48,16 @@ BallStepTiming timeBallSteps(int balls, int warmup, int steps, int repeats, Star
     const double ballSteps = static_cast<double>(steps) * balls;
     for (int r = 0; r < repeats; ++r) {
         start();
-        for (int i = 0; i < warmup; ++i)
+        for (int i = 0; i < warmup; ++i) {
             step();
+            between();
+        }
         const double cpuStart = processCpuNanoseconds();
         const auto start = Clock::now();
-        for (int i = 0; i < steps; ++i)
+        for (int i = 0; i < steps; ++i) {
             step();
+            between();
+        }
         const std::chrono::duration<double, std::nano> elapsed = Clock::now() - start;
         cpu.push_back((processCpuNanoseconds() - cpuStart) / ballSteps);
         wall.push_back(elapsed.count() / ballSteps);

@@ -4,6 +4,8 @@
 #include "commands.h"
 #include "interrupt.h"
 
+#include "../../core/io/atomic_file.h"
+
 #include <array>
 #include <functional>
 #include <iostream>
@@ -33,8 +35,9 @@ const std::array commands{
             "                            --chart position|velocity|energy --out FILE.png|FILE.svg [--ball B]\n"
             "                            [--width W] [--height H] and the run options (B = 1 is the first ball)",
             chartCommand},
-    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
-                         "                            the stiff and extreme cases, one row per model and integrator",
+    Command{"stability",
+            "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+            "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},
     Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
             studyCommand},
@@ -58,7 +61,57 @@ void usage(std::ostream& out)
            "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
            "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
            "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
-           "  valid) holds the states before it; 130 when interrupted.\n";
+           "  valid) holds the states before it; 4 when an output could not be written (disk full, standard\n"
+           "  output closed; a file written before is kept); 130 when interrupted (no file is left).\n";
+}
+
+// Every message is one line: whatever a message quotes, no control character reaches the
+// terminal (quoted input is already escaped; this is the last guard).
+std::string oneLine(std::string_view text)
+{
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7F) {
+            static const char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+// Runs one command; what it printed is flushed inside, so that a failed write to standard
+// output is reported like any other.
+int dispatch(const Command& c, const std::string& name, const std::vector<std::string>& argv, std::ostream& out,
+             std::ostream& err)
+{
+    Args args(name, std::vector<std::string>(argv.begin() + 1, argv.end()));
+    try {
+        const int status = c.fn(args, out, err);
+        out.flush();
+        if (!out)
+            throw OutputError("standard output: not written (the stream failed)");
+        return status;
+    } catch (const Interrupted&) {
+        err << "amazeballs-cli: " << name << ": interrupted; no output file was written\n";
+        return 130;
+    } catch (const OutputError& e) {
+        err << "amazeballs-cli: " << name << ": " << oneLine(e.what()) << "\n";
+        return 4;
+    } catch (const InputError& e) {
+        err << "amazeballs-cli: " << oneLine(e.what()) << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        err << "amazeballs-cli: " << name << ": out of memory (try fewer balls or steps)\n";
+        return 2;
+    } catch (const std::exception& e) {
+        err << "amazeballs-cli: internal error: " << oneLine(e.what()) << "\n";
+        return 1;
+    }
 }
 
 } // namespace
@@ -71,29 +124,18 @@ int run(const std::vector<std::string>& argv, std::ostream& out, std::ostream& e
     }
     const std::string& name = argv.front();
     if (name == "help" || name == "--help" || name == "-h") {
-        usage(out);
-        return 0;
-    }
-    for (const Command& c : commands) {
-        if (name != c.name)
-            continue;
-        Args args(name, std::vector<std::string>(argv.begin() + 1, argv.end()));
         try {
-            return c.fn(args, out, err);
-        } catch (const Interrupted&) {
-            err << "amazeballs-cli: " << name << ": interrupted; no output file was written\n";
-            return 130;
-        } catch (const InputError& e) {
-            err << "amazeballs-cli: " << e.what() << "\n";
-            return 2;
-        } catch (const std::bad_alloc&) {
-            err << "amazeballs-cli: " << name << ": out of memory (try fewer balls or steps)\n";
-            return 2;
-        } catch (const std::exception& e) {
-            err << "amazeballs-cli: internal error: " << e.what() << "\n";
-            return 1;
+            usage(out);
+            out.flush();
+        } catch (const OutputError& e) {
+            err << "amazeballs-cli: help: " << oneLine(e.what()) << "\n";
+            return 4;
         }
+        return out ? 0 : 4;
     }
+    for (const Command& c : commands)
+        if (name == c.name)
+            return dispatch(c, name, argv, out, err);
     err << "amazeballs-cli: unknown command '" << printableInput(name) << "' (try: amazeballs-cli help)\n";
     return 2;
 }

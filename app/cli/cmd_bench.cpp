@@ -61,12 +61,12 @@ Options readOptions(Args& args)
     if (const auto text = args.option("broadphase")) {
         o.broadphase = parseBroadphase(*text);
         if (!o.broadphase)
-            throw InputError("--broadphase: unknown value '" + *text + "' (choose grid, all-pairs)");
+            throw InputError("--broadphase: unknown value '" + printableInput(*text) + "' (choose grid, all-pairs)");
     }
     if (const auto text = args.option("model")) {
         const auto model = parseModel(*text);
         if (!model)
-            throw InputError("--model: unknown value '" + *text + "' (choose physical, report)");
+            throw InputError("--model: unknown value '" + printableInput(*text) + "' (choose physical, report)");
         o.model = *model;
     }
     o.threads = static_cast<int>(args.integer("threads", 1, 256).value_or(1));

@@ -38,7 +38,7 @@ ui::ChartKind readChartKind(Args& args)
         throw InputError("chart: missing --chart (one of " + chartKeys() + ")");
     const auto kind = ui::parseChartKind(*key);
     if (!kind)
-        throw InputError("--chart: unknown chart '" + *key + "' (choose " + chartKeys() + ")");
+        throw InputError("--chart: unknown chart '" + printableInput(*key) + "' (choose " + chartKeys() + ")");
     return *kind;
 }
 
@@ -49,7 +49,7 @@ std::string readImagePath(Args& args)
         throw InputError("chart: missing --out FILE.png or FILE.svg");
     const QString suffix = QFileInfo(QString::fromStdString(*path)).suffix().toLower();
     if (suffix != "png" && suffix != "svg")
-        throw InputError("--out: " + *path + " must end in .png or .svg");
+        throw InputError("--out: " + printableInput(*path) + " must end in .png or .svg");
     checkWritable(*path); // fail before a long run, not after
     return *path;
 }
@@ -78,9 +78,14 @@ ui::MotionTrack simulate(Simulation& sim, const RunSetup& setup, int ball, std::
         },
         [&] { return !healthy || interrupted(); });
     throwIfInterrupted();
-    if (!healthy)
-        err << "amazeballs-cli: warning: the state became non-finite after t = "
-            << formatNumber(track.empty() ? 0.0 : track.t().back()) << "; the chart ends there\n";
+    if (!healthy) {
+        const double last = track.empty() ? sim.start().t : track.t().back();
+        err << "amazeballs-cli: chart: warning: the state became non-finite "
+            << (track.empty()         ? "at the start"
+                : std::isfinite(last) ? "after t = " + formatNumber(last)
+                                      : std::string("once the time itself overflowed"))
+            << "; the chart ends there\n";
+    }
     return track;
 }
 

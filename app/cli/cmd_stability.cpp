@@ -28,7 +28,7 @@ std::vector<const stability::StabilityCase*> selectedCases(const std::vector<std
     for (const std::string& name : names) {
         const stability::StabilityCase* c = stability::findCase(name);
         if (!c)
-            throw InputError("--case: unknown case '" + name + "' (choose " + caseNames() + ")");
+            throw InputError("--case: unknown case '" + printableInput(name) + "' (choose " + caseNames() + ")");
         cases.push_back(c);
     }
     if (names.empty())

@@ -79,7 +79,8 @@ void checkChartPath(const std::string& path)
 {
     const std::string suffix = QFileInfo(QString::fromStdString(path)).suffix().toLower().toStdString();
     if (suffix != "png" && suffix != "svg")
-        throw InputError("--chart: " + path + ": unknown image type '" + suffix + "' (use .png or .svg)");
+        throw InputError("--chart: " + printableInput(path) + ": unknown image type '" + printableInput(suffix) +
+                         "' (use .png or .svg)");
     checkWritable(path);
 }
 

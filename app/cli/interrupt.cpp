@@ -1,36 +1,50 @@
 // SPDX-License-Identifier: MIT
 #include "interrupt.h"
 
+#include "../../core/io/atomic_file.h"
+
 #include <csignal>
 
 namespace ab::cli {
 
 namespace {
 
-volatile std::sig_atomic_t flag = 0;
-
-extern "C" void onSignal(int)
+// Async-signal-safe only: an atomic store, unlink, sigaction, raise.
+extern "C" void onSignal(int sig)
 {
-    flag = 1;
+    if (!interruptRequested()) {
+        requestInterrupt();
+        return;
+    }
+    removeTempFilesNow(); // the second signal: do not wait for the command
+    struct sigaction dfl {};
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    ::sigaction(sig, &dfl, nullptr);
+    ::raise(sig);
 }
 
 } // namespace
 
 void installInterruptHandler()
 {
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
+    removeTempFilesOnSignals(false);
+    struct sigaction sa {};
+    sa.sa_handler = onSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; // no SA_RESTART: a blocked write returns EINTR and the command sees the request
+    ::sigaction(SIGINT, &sa, nullptr);
+    ::sigaction(SIGTERM, &sa, nullptr);
 }
 
 bool interrupted()
 {
-    return flag != 0;
+    return interruptRequested();
 }
 
 void throwIfInterrupted()
 {
-    if (interrupted())
-        throw Interrupted();
+    throwIfInterruptRequested();
 }
 
 } // namespace ab::cli

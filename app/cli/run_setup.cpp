@@ -31,6 +31,48 @@ E readEnum(Args& args, const std::string& name, std::optional<E> (*parse)(std::s
     return *value;
 }
 
+std::string_view trimmed(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+        s.remove_suffix(1);
+    return s;
+}
+
+constexpr long long kMaxSteps = 4'000'000'000LL;
+
+// The run's length: --steps, or the whole steps of --dt to reach --t-end, or the preset's
+// or scene's; a length of no step, or of more than kMaxSteps, is refused.
+long long readSteps(Args& args, const RunSpec& spec, std::optional<long long> presetSteps)
+{
+    const auto steps = args.integer("steps", 1, kMaxSteps);
+    const auto tEnd = args.real("t-end");
+    if (steps && tEnd)
+        throw InputError("--steps and --t-end: give one of them, not both");
+    if (steps)
+        return *steps;
+    if (!tEnd)
+        return presetSteps.value_or(defaultSteps(spec.scene, spec.model));
+    const double dt = spec.dt.value_or(defaultDt(spec.scene, spec.model));
+    const double start = spec.init ? spec.init->t : 0.0;
+    if (*tEnd <= start)
+        throw InputError("--t-end: " + formatNumber(*tEnd) + " is not after the start time " + formatNumber(start) +
+                         " (a run needs at least one step)");
+    // Whole steps to reach t-end; a ratio within round-off of an integer is that integer.
+    // Compared as a double before any conversion: a ratio beyond the limit (or infinite)
+    // has no integer to convert to.
+    const double n = (*tEnd - start) / dt;
+    if (!(n <= static_cast<double>(kMaxSteps)))
+        throw InputError("--t-end: " + formatNumber(*tEnd) + " needs more than 4e9 steps of " + formatNumber(dt));
+    const double rounded = std::round(n);
+    const double whole = std::abs(n - rounded) < 1e-9 * std::max(1.0, n) ? rounded : std::ceil(n);
+    if (whole < 1.0 || start + dt == start)
+        throw InputError("--t-end: " + formatNumber(*tEnd) + " gives no step of " + formatNumber(dt) +
+                         " from the start time " + formatNumber(start));
+    return static_cast<long long>(whole);
+}
+
 } // namespace
 
 RunSetup readRunSetup(Args& args)
@@ -63,38 +105,25 @@ RunSetup readRunSetup(Args& args)
             throw InputError("--dt: " + formatNumber(*dt) + " must be positive");
         spec.dt = *dt;
     }
-    for (const std::string& assignment : args.options("set"))
+    std::optional<std::string> setN; // the --set that gave n, if one did
+    for (const std::string& assignment : args.options("set")) {
         spec.params.parseAssignment(assignment);
+        if (const auto eq = assignment.find('='); trimmed(assignment.substr(0, eq)) == "n")
+            setN = assignment;
+    }
     if (const auto init = args.option("init")) {
         State s = readFirstState(*init);
         if (info->ballCount == 0) {
             if (!spec.params.indexOf("n"))
                 throw std::logic_error("scene with a variable ball count but no n");
+            if (setN && spec.params.integer("n") != s.size())
+                throw InputError("--set " + printableInput(*setN) + ": --init " + printableInput(*init) + " has " +
+                                 std::to_string(s.size()) + " balls; give one or the other");
             spec.params.set("n", Eigen::Vector3d(s.size(), 0.0, 0.0));
         }
         spec.init = std::move(s);
     }
-
-    const auto steps = args.integer("steps", 0, 4'000'000'000LL);
-    const auto tEnd = args.real("t-end");
-    if (steps && tEnd)
-        throw InputError("--steps and --t-end: give one of them, not both");
-    const double dt = spec.dt.value_or(defaultDt(spec.scene, spec.model));
-    if (steps) {
-        setup.steps = *steps;
-    } else if (tEnd) {
-        const double start = spec.init ? spec.init->t : 0.0;
-        if (*tEnd < start)
-            throw InputError("--t-end: " + formatNumber(*tEnd) + " is before the start time " + formatNumber(start));
-        // Whole steps to reach t-end; a ratio within round-off of an integer is that integer.
-        const double n = (*tEnd - start) / dt;
-        const double rounded = std::round(n);
-        setup.steps = static_cast<long long>(std::abs(n - rounded) < 1e-9 * std::max(1.0, n) ? rounded : std::ceil(n));
-        if (setup.steps > 4'000'000'000LL)
-            throw InputError("--t-end: " + formatNumber(*tEnd) + " needs more than 4e9 steps of " + formatNumber(dt));
-    } else {
-        setup.steps = presetSteps.value_or(defaultSteps(spec.scene, spec.model));
-    }
+    setup.steps = readSteps(args, spec, presetSteps);
     return setup;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "cell_list.h"
 
+#include "../interrupt.h"
+
 #include <algorithm>
 
 namespace ab::broadphase {
@@ -64,12 +66,16 @@ int CellList::lowestWithin(int i, const Eigen::Vector3d& q, double reach, const 
     const int m = geo_.perAxis();
     const int cx = geo_.coord(q.x()), cy = geo_.coord(q.y()), cz = geo_.coord(q.z());
     int best = -1;
+    unsigned visited = 0; // a crowded cell (the report's start cube) holds up to all N balls
     for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, m - 1); ++z)
         for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, m - 1); ++y)
             for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, m - 1); ++x)
-                for (int j = head_[geo_.cell(x, y, z)]; j >= 0; j = next_[static_cast<std::size_t>(j)])
+                for (int j = head_[geo_.cell(x, y, z)]; j >= 0; j = next_[static_cast<std::size_t>(j)]) {
+                    if ((++visited & 0xFFFFu) == 0)
+                        throwIfInterruptRequested(); // Ctrl+C within one query of millions
                     if (j != i && (best < 0 || j < best) && withinReach(q, p, j, reach))
                         best = j;
+                }
     return best;
 }
 

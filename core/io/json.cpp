@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace ab::json {
 
@@ -201,6 +202,7 @@ private:
         enter(depth);
         ++pos_; // '{'
         Value v = Value::makeObject();
+        std::unordered_set<std::string> keys; // duplicates found in O(1) a key, not O(members)
         skipSpace();
         if (peek() == '}') {
             ++pos_;
@@ -212,7 +214,7 @@ private:
                 fail("expected a key in double quotes, found " + describeHere());
             const std::size_t keyAt = pos_;
             std::string key = string();
-            if (v.find(key))
+            if (!keys.insert(key).second)
                 failAt(keyAt, "duplicate key '" + printable(key) + "'");
             expect(':', "after a key");
             v.add(std::move(key), value(depth));
@@ -279,8 +281,8 @@ private:
         double x = 0.0;
         const auto [end, ec] = std::from_chars(text_.data() + start, text_.data() + pos_, x);
         if (ec != std::errc() || end != text_.data() + pos_ || !std::isfinite(x))
-            failAt(start, "the number " + std::string(text_.substr(start, pos_ - start)) +
-                              " is outside the range of a double");
+            failAt(start,
+                   "the number " + printable(text_.substr(start, pos_ - start)) + " is outside the range of a double");
         return Value::makeNumber(x);
     }
 
@@ -491,18 +493,51 @@ void writeValue(std::string& out, const Value& v, int indent)
 
 } // namespace
 
+namespace {
+
+// The length of the valid UTF-8 sequence at text[i], or 0 when the byte starts none.
+std::size_t utf8Length(std::string_view text, std::size_t i)
+{
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char b = byte(i);
+    const std::size_t n = b < 0x80 ? 1 : (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xE ? 3 : (b >> 3) == 0x1E ? 4 : 0;
+    if (n == 0 || i + n > text.size())
+        return 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if ((byte(i + k) & 0xC0) != 0x80)
+            return 0;
+    if (n == 2 && b < 0xC2)
+        return 0; // overlong
+    return n;
+}
+
+} // namespace
+
 std::string printable(std::string_view text, std::size_t max)
 {
     std::string out;
-    if (text.size() <= max) {
-        appendEscaped(out, text);
-        return out;
+    std::size_t chars = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        if (chars == max)
+            return out + "\xE2\x80\xA6"; // "…", the cut
+        ++chars;
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const std::size_t n = utf8Length(text, i);
+        char buf[8];
+        if (c == '\n' || c == '\t' || c == '\r') {
+            out += c == '\n' ? "\\n" : c == '\t' ? "\\t" : "\\r";
+        } else if (n == 0 || c < 0x20 || c == 0x7F) {
+            std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(c)); // a control or a stray byte
+            out += buf;
+        } else if (n == 2 && c == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) {
+            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(text[i + 1]) & 0xFFu); // C1 control
+            out += buf;
+        } else {
+            out.append(text.substr(i, n));
+        }
+        i += n == 0 ? 1 : n;
     }
-    std::size_t cut = max;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
-        --cut; // not inside a UTF-8 sequence
-    appendEscaped(out, text.substr(0, cut));
-    return out + "...";
+    return out;
 }
 
 Value parse(std::string_view text, const std::string& origin)

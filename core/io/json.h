@@ -52,9 +52,11 @@ struct Member {
     friend bool operator==(const Member&, const Member&) = default;
 };
 
-// Text from a file or a command line made safe to quote in a one-line message: control
-// characters escaped as in JSON, cut after `max` bytes with "...".
-std::string printable(std::string_view text, std::size_t max = 60);
+// Text from a file or a command line made safe to quote in a one-line message: newline,
+// tab and return as \n \t \r, other control characters and bytes that are not UTF-8 as
+// \xNN (so no terminal escape sequence passes), C1 controls as \u0080..\u009f; cut after
+// `max` characters with "…".
+std::string printable(std::string_view text, std::size_t max = 80);
 
 // "an object", "a number", ... for messages.
 std::string_view kindName(Value::Kind kind);

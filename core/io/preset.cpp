@@ -34,6 +34,7 @@
 
 #include "atomic_file.h"
 #include "embedded_presets.h"
+#include "input_file.h"
 #include "json.h"
 
 #include <algorithm>
@@ -210,6 +211,10 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Value& v, 
         }
         const Eigen::Vector3d value =
             spec->kind == ParamKind::Vector ? vector3(m.value, here) : Eigen::Vector3d(number(m.value, here), 0, 0);
+        // A double holds every whole number up to 2^53 - 1; beyond, the text was rounded.
+        if (spec->kind == ParamKind::Integer && std::abs(value[0]) > 9007199254740991.0)
+            here.fail(formatNumber(value[0]) + " is beyond 2^53 - 1 = 9007199254740991, the largest whole number "
+                                               "kept exactly");
         params.emplace_back(m.key, value);
     }
     return params;
@@ -264,9 +269,8 @@ std::string shown(double x)
 
 bool isChartKey(const std::string& k)
 {
-    return !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
-    });
+    const auto& keys = presetChartKeys();
+    return std::find(keys.begin(), keys.end(), k) != keys.end();
 }
 
 void checkView(const PresetView& view, const Where& at, long long ballCount)
@@ -283,8 +287,8 @@ void checkView(const PresetView& view, const Where& at, long long ballCount)
     for (std::size_t i = 0; i < view.charts.size(); ++i) {
         const std::string& chart = view.charts[i];
         if (!isChartKey(chart))
-            (at / "charts")[i].fail("'" + json::printable(chart) +
-                                    "' is not a chart key (lowercase letters, digits, '-' and '_')");
+            (at / "charts")[i].fail("unknown chart '" + json::printable(chart) + "' (choose " +
+                                    joined(presetChartKeys()) + ")");
         if (std::find(view.charts.begin(), view.charts.begin() + static_cast<std::ptrdiff_t>(i), chart) !=
             view.charts.begin() + static_cast<std::ptrdiff_t>(i))
             (at / "charts")[i].fail("'" + json::printable(chart) + "' is listed twice");
@@ -413,23 +417,10 @@ std::string presetOrigin(const Preset& p)
     return "preset '" + json::printable(p.name) + "'";
 }
 
-std::string readPresetFile(const std::string& path, const std::string& origin)
+std::string readPresetFile(const std::string& path)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(origin + ": is a folder, not a preset file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(origin + ": cannot read the file (" + std::strerror(errno) + ")");
-    std::string text(json::maxBytes + 1, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    if (in.bad())
-        throw InputError(origin + ": cannot read the file (" + std::strerror(errno) + ")");
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    if (text.size() > json::maxBytes)
-        throw InputError(origin + ": the file is larger than " + std::to_string(json::maxBytes >> 20) +
-                         " MiB; a preset is a few hundred bytes");
-    return text;
+    // A regular file only, its size checked before it is read (input_file.h).
+    return readInputFile(path, "preset", json::maxBytes);
 }
 
 } // namespace
@@ -473,7 +464,7 @@ std::string presetToJson(const Preset& preset)
 
 void savePreset(const std::filesystem::path& path, const Preset& preset)
 {
-    const std::string origin = "preset " + json::printable(path.string(), 4096);
+    const std::string origin = "preset " + json::printable(path.string());
     checkPreset(preset, origin);
     const std::string text = presetToJson(preset);
     // Numbers are formatted by the C library; a locale with a decimal comma would make
@@ -486,6 +477,12 @@ void savePreset(const std::filesystem::path& path, const Preset& preset)
     if (!readsBack)
         throw std::logic_error(origin + ": not saved: the text would not read back as this preset");
     writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
+const std::vector<std::string>& presetChartKeys()
+{
+    static const std::vector<std::string> keys{"position", "velocity", "energy", "momentum", "activity"};
+    return keys;
 }
 
 const std::vector<BuiltinPreset>& builtinPresets()
@@ -518,8 +515,8 @@ Preset loadPreset(const std::string& nameOrPath)
         throw InputError("preset '" + json::printable(nameOrPath) + "': no built-in preset has that name (built-in: " +
                          joined(keys) + "); a preset file's name ends in .json");
     }
-    const std::string origin = "preset " + json::printable(nameOrPath, 4096);
-    return parsePreset(readPresetFile(nameOrPath, origin), origin);
+    const std::string origin = "preset " + json::printable(nameOrPath);
+    return parsePreset(readPresetFile(nameOrPath), origin);
 }
 
 void applyPreset(const Preset& preset, RunSpec& spec)

@@ -70,4 +70,8 @@ const std::vector<BuiltinPreset>& builtinPresets();
 // preset's scene must be the spec's (InputError otherwise). Steps are the caller's.
 void applyPreset(const Preset& preset, RunSpec& spec);
 
+// The chart keys a preset's view.charts may hold: the window's charts (ui/charts
+// chartKey(); a test checks both lists agree).
+const std::vector<std::string>& presetChartKeys();
+
 } // namespace ab

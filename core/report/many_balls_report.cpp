@@ -6,6 +6,8 @@
 // not depend on the broadphase.
 #include "report_models.h"
 
+#include "../interrupt.h"
+
 #include "../broadphase/cell_list.h"
 #include "../random.h"
 
@@ -111,6 +113,10 @@ public:
             grid_.build(cells_, b.p);
         int repeats = 0; // shared by all balls of one frame, as `counter` in update_pos
         for (int i = 0; i < n_; ++i) {
+            // One frame of millions of balls in contact is quadratic (the report's ball
+            // check): an interrupt is honoured within the frame.
+            if ((i & 15) == 0)
+                throwIfInterruptRequested();
             if (b.bounces[i] > maxBounces_ && b.p(1, i) < -limit_ + r_) {
                 b.p(1, i) = -limit_; // rest on the floor
                 b.v.col(i).setZero();

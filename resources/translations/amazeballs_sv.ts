@@ -2300,5 +2300,9 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>--compare: refused: %1</source>
         <translation>--compare: avvisades: %1</translation>
     </message>
+    <message>
+        <source>--measure-frames: %1 is outside [1, 3600] seconds</source>
+        <translation>--measure-frames: %1 ligger utanför [1, 3600] sekunder</translation>
+    </message>
 </context>
 </TS>

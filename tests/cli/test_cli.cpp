@@ -76,8 +76,8 @@ private slots:
 
     void runBox3dWithSetValuesMatchesTheListing()
     {
-        const Result r = cli({"run", "box3d", "--set", "k=0.75", "--set", "g=5", "--set", "max_bounces=30", "--set",
-                              "p0=20,60,40"});
+        const Result r =
+            cli({"run", "box3d", "--set", "k=0.75", "--set", "g=5", "--set", "max_bounces=30", "--set", "p0=20,60,40"});
         QCOMPARE(r.status, 0);
         const auto rows = parseCsv(r.out);
         const auto ref = listing::appendixB(-5, 0.75, 300, {20, 60, 40}, {10, 0, 15}, 30, 6000);
@@ -155,10 +155,11 @@ private slots:
         QTest::newRow("unknown scene") << QStringList{"run", "three-balls"} << "unknown scene 'three-balls'";
         QTest::newRow("missing scene") << QStringList{"run"} << "missing SCENE";
         QTest::newRow("unknown option") << QStringList{"run", "bounce1d", "--speed", "3"} << "unknown option '--speed'";
-        QTest::newRow("unknown parameter") << QStringList{"run", "bounce1d", "--set", "p0=1,2,3"}
-                                           << "unknown parameter 'p0'";
+        QTest::newRow("unknown parameter")
+            << QStringList{"run", "bounce1d", "--set", "p0=1,2,3"} << "unknown parameter 'p0'";
         QTest::newRow("out of range") << QStringList{"run", "bounce1d", "--set", "k=2"} << "k: 2 is outside";
-        QTest::newRow("non-finite") << QStringList{"run", "box3d", "--set", "g=nan"} << "g: 'nan' is not a finite number";
+        QTest::newRow("non-finite") << QStringList{"run", "box3d", "--set", "g=nan"}
+                                    << "g: 'nan' is not a finite number";
         QTest::newRow("malformed vector") << QStringList{"run", "box3d", "--set", "v0=1;2;3"} << "v0: '1;2;3'";
         QTest::newRow("bad dt") << QStringList{"run", "box3d", "--dt", "-1"} << "--dt";
         QTest::newRow("non-finite dt") << QStringList{"run", "box3d", "--dt", "inf"} << "--dt";
@@ -169,14 +170,13 @@ private slots:
         QTest::newRow("bad integrator") << QStringList{"run", "box3d", "--integrator", "leapfrog"}
                                         << "--integrator: unknown value 'leapfrog'";
         QTest::newRow("missing value") << QStringList{"run", "box3d", "--set"} << "--set: missing value";
-        QTest::newRow("start outside box") << QStringList{"run", "box3d", "--set", "p0=301,5,5"}
-                                           << "outside the box";
+        QTest::newRow("start outside box") << QStringList{"run", "box3d", "--set", "p0=301,5,5"} << "outside the box";
         QTest::newRow("report frame step") << QStringList{"run", "many-balls", "--dt", "0.5"} << "one frame";
-        QTest::newRow("unwritable folder") << QStringList{"run", "bounce1d", "--out", "/nonexistent-dir/x.csv"}
-                                           << "does not exist";
+        QTest::newRow("unwritable folder")
+            << QStringList{"run", "bounce1d", "--out", "/nonexistent-dir/x.csv"} << "does not exist";
         QTest::newRow("output is a folder") << QStringList{"run", "bounce1d", "--out", "/tmp"} << "is a folder";
-        QTest::newRow("missing init file") << QStringList{"run", "box3d", "--init", "/nonexistent.csv"}
-                                           << "--init: cannot read";
+        QTest::newRow("missing init file")
+            << QStringList{"run", "box3d", "--init", "/nonexistent.csv"} << "--init: /nonexistent.csv: no such file";
         QTest::newRow("stray argument") << QStringList{"list", "extra"} << "unexpected argument 'extra'";
     }
 

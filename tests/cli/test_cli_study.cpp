@@ -2,8 +2,8 @@
 // `amazeballs-cli study` in process: the CSV with the contract's columns, the Markdown
 // report, the chart as PNG and SVG, progress on stderr, bad input refused (exit 2, one
 // line, no file), and Ctrl+C leaving no file behind.
-#include "support/cli_runner.h"
 #include "app/cli/interrupt.h"
+#include "support/cli_runner.h"
 
 #include <QImage>
 #include <QTemporaryDir>

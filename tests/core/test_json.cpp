@@ -206,10 +206,14 @@ private slots:
 
     void printableTextIsOneShortLine()
     {
-        QCOMPARE(ab::json::printable("a\nb\x01\"c\""), std::string("a\\nb\\u0001\\\"c\\\""));
-        QCOMPARE(ab::json::printable(std::string(100, 'x')), std::string(60, 'x') + "...");
-        // Cut before a character, never inside its UTF-8 bytes.
-        QCOMPARE(ab::json::printable(std::string(59, 'x') + "\xC3\xA9yz"), std::string(59, 'x') + "...");
+        // Controls escaped so that no terminal sequence passes; quotes left as they are.
+        QCOMPARE(ab::json::printable("a\nb\x01\"c\"\x1b[31m"), std::string("a\\nb\\x01\"c\"\\x1b[31m"));
+        // A C1 control (U+009B, CSI) and a byte that is not UTF-8.
+        QCOMPARE(ab::json::printable("x\xC2\x9By\xFFz"), std::string("x\\u009by\\xffz"));
+        // Cut after 80 characters with an ellipsis.
+        QCOMPARE(ab::json::printable(std::string(100, 'x')), std::string(80, 'x') + "\xE2\x80\xA6");
+        // Characters, not bytes, are counted: never cut inside a character's UTF-8 bytes.
+        QCOMPARE(ab::json::printable(std::string(79, 'x') + "\xC3\xA9yz"), std::string(79, 'x') + "\xC3\xA9\xE2\x80\xA6");
     }
 
     void writerRefusesNonFiniteNumbers()

@@ -106,7 +106,7 @@ ab::Preset awkwardPreset()
     p.view.cameraPitch = 89.99999999999999;
     p.view.cameraDistance = 1e300;
     p.view.cameraTarget = Eigen::Vector3d(1.0 / 3.0, -2.5e-310, 2e15 + 2);
-    p.view.charts = {"energy", "momentum-x"};
+    p.view.charts = {"energy", "momentum"};
     p.view.selectedBall = 1;
     p.view.compare = ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::StepEnd, 1.0 / 7.0};
     return p;
@@ -364,6 +364,8 @@ private slots:
                                                   << "view.camera.distance: -5 must be a positive distance";
         QTest::newRow("chart as a number")
             << doc("box3d", R"(, "view": {"charts": [1]})") << "view.charts[0]: expected a string, found a number";
+        QTest::newRow("unknown chart") << doc("box3d", R"(, "view": {"charts": ["nosuchchart"]})")
+                                       << "view.charts[0]: unknown chart 'nosuchchart'";
         QTest::newRow("chart twice") << doc("box3d", R"(, "view": {"charts": ["velocity", "velocity"]})")
                                      << "view.charts[1]: 'velocity' is listed twice";
         QTest::newRow("compare without a model")
@@ -545,7 +547,7 @@ private slots:
     {
         const CliResult missing = cli({"run", "box3d", "--preset", "/nonexistent/preset.json"});
         QCOMPARE(missing.status, 2);
-        QVERIFY2(missing.err.find("preset /nonexistent/preset.json: cannot read the file") != std::string::npos,
+        QVERIFY2(missing.err.find("preset: /nonexistent/preset.json: no such file") != std::string::npos,
                  missing.err.c_str());
         QVERIFY(missing.out.empty());
         const CliResult wrongScene = cli({"run", "two-balls", "--preset", "box3d-report"});

@@ -4,12 +4,12 @@
 #include "core/io/atomic_file.h"
 #include "core/params.h"
 
+#include <QBuffer>
 #include <QChart>
 #include <QFileInfo>
 #include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QPainter>
-#include <QSaveFile>
 #include <QSvgGenerator>
 
 namespace ab::ui {
@@ -42,7 +42,10 @@ public:
     Staged(const Staged&) = delete;
     Staged& operator=(const Staged&) = delete;
 
-    void render(QPainter& painter, QSize size) { scene_.render(&painter, QRectF(QPointF(0, 0), size), scene_.sceneRect()); }
+    void render(QPainter& painter, QSize size)
+    {
+        scene_.render(&painter, QRectF(QPointF(0, 0), size), scene_.sceneRect());
+    }
 
 private:
     QChart* chart_;
@@ -68,12 +71,13 @@ void exportChart(QChart* chart, const QString& path, QSize size)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != "png" && suffix != "svg")
-        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() +
-                         "' (use .png or .svg)");
+        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() + "' (use .png or .svg)");
     checkWritable(path.toStdString());
-    QSaveFile file(path); // writes a temporary file and renames it on commit()
-    if (!file.open(QIODevice::WriteOnly))
-        throw InputError(path.toStdString() + ": cannot write (" + file.errorString().toStdString() + ")");
+    // Encoded in memory, then written through the one output path (core/io/atomic_file.h):
+    // every write checked, devices and links respected, nothing half-written.
+    QByteArray bytes;
+    QBuffer file(&bytes);
+    file.open(QIODevice::WriteOnly);
     if (suffix == "png") {
         if (!renderChart(chart, size).save(&file, "PNG"))
             throw InputError(path.toStdString() + ": PNG encoding failed");
@@ -89,8 +93,7 @@ void exportChart(QChart* chart, const QString& path, QSize size)
         staged.render(painter, size);
         painter.end();
     }
-    if (!file.commit())
-        throw InputError(path.toStdString() + ": write failed (" + file.errorString().toStdString() + ")");
+    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 } // namespace ab::ui

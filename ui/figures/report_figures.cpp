@@ -5,12 +5,12 @@
 #include "ui/charts/nice_ticks.h"
 #include "ui/charts/scene_layout.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QPainter>
 #include <QPainterPath>
 #include <QRadialGradient>
-#include <QSaveFile>
 #include <QSvgGenerator>
 
 #include <algorithm>
@@ -389,9 +389,10 @@ void writeImage(const QString& path, QSize size, const QString& title,
     if (suffix != "png" && suffix != "svg")
         throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() + "' (use .png or .svg)");
     checkWritable(path.toStdString());
-    QSaveFile file(path); // a temporary file renamed into place on commit()
-    if (!file.open(QIODevice::WriteOnly))
-        throw InputError(path.toStdString() + ": cannot write (" + file.errorString().toStdString() + ")");
+    // Encoded in memory, then written through the one output path (core/io/atomic_file.h).
+    QByteArray bytes;
+    QBuffer file(&bytes);
+    file.open(QIODevice::WriteOnly);
     const QRectF area(QPointF(0, 0), QSizeF(size));
     if (suffix == "png") {
         QImage image(size, QImage::Format_ARGB32_Premultiplied);
@@ -411,8 +412,7 @@ void writeImage(const QString& path, QSize size, const QString& title,
         paint(painter, area);
         painter.end();
     }
-    if (!file.commit())
-        throw InputError(path.toStdString() + ": write failed (" + file.errorString().toStdString() + ")");
+    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 } // namespace
