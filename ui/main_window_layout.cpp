@@ -13,6 +13,7 @@
 #include "tools/tools_menu.h"
 #include "view/ball_view.h"
 
+#include <QComboBox>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QMenuBar>
@@ -24,6 +25,28 @@
 #include <QVBoxLayout>
 
 namespace ab::ui {
+
+namespace {
+
+// Keeps a widget's combo boxes as wide as their longest item and the widget at least as
+// wide as its layout's minimum, as fonts and items change (a combo box's own minimum is
+// a dozen characters, whatever its size policy).
+class KeepLayoutMinimum : public QObject {
+public:
+    using QObject::QObject;
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        auto* w = qobject_cast<QWidget*>(watched);
+        if (w && w->layout() && (event->type() == QEvent::LayoutRequest || event->type() == QEvent::Show)) {
+            for (QComboBox* combo : w->findChildren<QComboBox*>())
+                combo->setMinimumWidth(combo->sizeHint().width());
+            w->setMinimumWidth(w->layout()->minimumSize().width());
+        }
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+} // namespace
 
 void MainWindow::buildLayout()
 {
@@ -65,6 +88,10 @@ void MainWindow::buildLayout()
     connect(transport_, &TransportBar::viewTimeChanged, this, &MainWindow::refresh);
     connect(charts_, &ChartPanel::ballRequested, &controller_, &RunController::selectBall);
     connect(charts_, &ChartPanel::exportRequested, this, &MainWindow::exportInteractively);
+    connect(charts_, &ChartPanel::pageChanged, this, [this] {
+        if (controller_.hasRun())
+            refreshPanels(); // the charts of the new page were not drawn while off it
+    });
 }
 
 QWidget* MainWindow::buildLeftPanel()
@@ -88,7 +115,14 @@ QWidget* MainWindow::buildLeftPanel()
     scroll->setWidget(settings);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // A choice is never cut to fit the column: each combo box is as wide as its longest
+    // item, and the settings scroll sideways where the column is narrower. (A layout with
+    // wrapped labels has a height for its width, and QScrollArea then sets the width to
+    // the viewport's, below the layout's minimum, unless the widget's own minimum says no.)
+    for (QComboBox* combo : settings->findChildren<QComboBox*>())
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    settings->installEventFilter(new KeepLayoutMinimum(settings));
     connect(parameters_, &ParameterPanel::valuesProposed, this, &MainWindow::applyValues);
     connect(runOptions_, &RunOptionsPanel::optionsProposed, this, &MainWindow::applyOptions);
 
@@ -131,10 +165,19 @@ void MainWindow::buildMenus()
     presets_->addFileActions(file);
     file->addAction(tr("Export current chart..."), QKeySequence(tr("Ctrl+E")), this,
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Png); });
+    // Only the charts the stage shows: the menu is filled each time it opens.
     QMenu* charts = file->addMenu(tr("Export chart"));
-    for (ChartKind kind : allChartKinds())
-        charts->addAction(tr("%1 chart...").arg(QString::fromLatin1(chartKey(kind).data())), this,
-                          [this, kind] { exportInteractively(kind, ExportFormat::Png); });
+    charts->setObjectName("exportChartMenu");
+    auto fill = [this, charts] {
+        charts->clear();
+        for (ChartKind kind : charts_->shownCharts()) {
+            QAction* a = charts->addAction(tr("%1 chart...").arg(ChartPanel::chartName(kind)), this,
+                                           [this, kind] { exportInteractively(kind, ExportFormat::Png); });
+            a->setObjectName(QStringLiteral("export-%1").arg(QString::fromLatin1(chartKey(kind).data())));
+        }
+    };
+    connect(charts, &QMenu::aboutToShow, this, fill);
+    fill();
     file->addAction(tr("Export chart data as CSV..."), QKeySequence(tr("Ctrl+Shift+E")), this,
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Csv); });
     QAction* viewPng = file->addAction(tr("Export 3D view as PNG..."), this, [this] { exportViewInteractively(); });

@@ -68,26 +68,55 @@ void LectureMode::setActive(bool on)
     emit activeChanged(on);
 }
 
+namespace {
+
+const QList<int> lectureColumns{2000, 4000, 4000};
+const QList<int> lectureLeft{10000, 0}; // the settings are hidden
+
+} // namespace
+
 void LectureMode::arrangePanels(bool lecture)
 {
-    // The walk is the lecture: the left column (navigator over the settings) takes a third
-    // of the width and the navigator most of that column. Proportions, not pixels:
-    // QSplitter shares its actual size out by them.
-    auto* columns = window_ ? qobject_cast<QSplitter*>(window_->centralWidget()) : nullptr;
-    auto* left = navigator_ ? qobject_cast<QSplitter*>(navigator_->parentWidget()) : nullptr;
-    auto arrange = [lecture](QSplitter* splitter, QList<int>& saved, const QList<int>& shares) {
-        if (!splitter || splitter->count() != shares.size())
+    // The 3D view and the charts are the lecture: they take four fifths of the width in
+    // equal shares, the left column a fifth, and in it the navigator (the walk's
+    // equations) all of it; the settings below are hidden until lecture mode is left.
+    // Proportions, not pixels: QSplitter shares its actual size out by them.
+    auto save = [lecture](QSplitter* splitter, QList<int>& saved) {
+        if (!splitter)
             return;
         if (lecture) {
             saved = splitter->sizes();
-            splitter->setSizes(shares);
         } else if (!saved.isEmpty()) {
             splitter->setSizes(saved);
             saved.clear();
         }
     };
-    arrange(columns, desktopColumns_, {3200, 3800, 3000});
-    arrange(left, desktopLeft_, {7000, 3000});
+    save(columnSplitter(), desktopColumns_);
+    save(leftSplitter(), desktopLeft_);
+    if (QSplitter* left = leftSplitter(); left && left->count() == 2)
+        left->widget(1)->setVisible(!lecture);
+    if (lecture)
+        applyShares();
+}
+
+QSplitter* LectureMode::columnSplitter() const
+{
+    return window_ ? qobject_cast<QSplitter*>(window_->centralWidget()) : nullptr;
+}
+
+QSplitter* LectureMode::leftSplitter() const
+{
+    return navigator_ ? qobject_cast<QSplitter*>(navigator_->parentWidget()) : nullptr;
+}
+
+void LectureMode::applyShares()
+{
+    if (!active_)
+        return;
+    for (auto [splitter, shares] :
+         {std::pair{columnSplitter(), lectureColumns}, std::pair{leftSplitter(), lectureLeft}})
+        if (splitter && splitter->count() == shares.size())
+            splitter->setSizes(shares);
 }
 
 void LectureMode::next()
@@ -138,6 +167,10 @@ LectureMode::Command LectureMode::commandFor(const QKeyEvent& key) const
 
 bool LectureMode::eventFilter(QObject* watched, QEvent* event)
 {
+    // Full screen arrives as a resize after the panels were arranged: keep the shares.
+    if (event->type() == QEvent::Resize && active_ && watched == window_)
+        QMetaObject::invokeMethod(
+            this, [this] { applyShares(); }, Qt::QueuedConnection);
     if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
         return QObject::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);
