@@ -73,6 +73,21 @@ namespace {
 const QList<int> lectureColumns{2000, 4000, 4000};
 const QList<int> lectureLeft{10000, 0}; // the settings are hidden
 
+// Shares as pixels of the splitter's width (or height): QSplitter takes larger numbers
+// from the widgets without stretch, which left the left column most of the screen.
+QList<int> pixels(const QSplitter* splitter, const QList<int>& shares)
+{
+    const bool across = splitter->orientation() == Qt::Horizontal;
+    const int room = (across ? splitter->width() : splitter->height()) - splitter->handleWidth() * (shares.size() - 1);
+    int sum = 0;
+    for (int share : shares)
+        sum += share;
+    QList<int> out;
+    for (int share : shares)
+        out << std::max(0, room) * share / std::max(sum, 1);
+    return out;
+}
+
 } // namespace
 
 void LectureMode::arrangePanels(bool lecture)
@@ -116,7 +131,7 @@ void LectureMode::applyShares()
     for (auto [splitter, shares] :
          {std::pair{columnSplitter(), lectureColumns}, std::pair{leftSplitter(), lectureLeft}})
         if (splitter && splitter->count() == shares.size())
-            splitter->setSizes(shares);
+            splitter->setSizes(pixels(splitter, shares));
 }
 
 void LectureMode::next()
