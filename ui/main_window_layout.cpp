@@ -28,22 +28,32 @@ namespace ab::ui {
 
 namespace {
 
-// Keeps a widget's combo boxes as wide as their longest item and the widget at least as
-// wide as its layout's minimum, as fonts and items change (a combo box's own minimum is
-// a dozen characters, whatever its size policy).
+// Keeps the settings' combo boxes as wide as their longest item and the settings at least
+// as wide as their layout's minimum, as fonts and items change (a combo box's own minimum
+// is a dozen characters, whatever its size policy); none while their scroll area is
+// folded away (lecture mode), so that they do not widen the column.
 class KeepLayoutMinimum : public QObject {
 public:
-    using QObject::QObject;
+    KeepLayoutMinimum(QWidget* settings, QWidget* scroll) : QObject(settings), settings_(settings), scroll_(scroll)
+    {
+        settings->installEventFilter(this);
+        scroll->installEventFilter(this);
+    }
     bool eventFilter(QObject* watched, QEvent* event) override
     {
-        auto* w = qobject_cast<QWidget*>(watched);
-        if (w && w->layout() && (event->type() == QEvent::LayoutRequest || event->type() == QEvent::Show)) {
-            for (QComboBox* combo : w->findChildren<QComboBox*>())
+        const QEvent::Type t = event->type();
+        if (t == QEvent::LayoutRequest || t == QEvent::Show || (watched == scroll_ && t == QEvent::Resize)) {
+            for (QComboBox* combo : settings_->findChildren<QComboBox*>())
                 combo->setMinimumWidth(combo->sizeHint().width());
-            w->setMinimumWidth(w->layout()->minimumSize().width());
+            const bool open = scroll_->height() > 0 && settings_->layout();
+            settings_->setMinimumWidth(open ? settings_->layout()->minimumSize().width() : 0);
         }
         return QObject::eventFilter(watched, event);
     }
+
+private:
+    QWidget* settings_;
+    QWidget* scroll_;
 };
 
 } // namespace
@@ -64,7 +74,7 @@ void MainWindow::buildLayout()
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 3);
     splitter->setStretchFactor(2, 2);
-    splitter->setSizes({340, 640, 480});
+    splitter->setSizes({400, 600, 480}); // the settings column as wide as its widest choice at 1400
     setCentralWidget(splitter);
     readout_ = new StatusReadout(statusBar());
     readout_->setFrameRate(view_ ? 0.0 : -1.0);
@@ -122,7 +132,7 @@ QWidget* MainWindow::buildLeftPanel()
     for (QComboBox* combo : settings->findChildren<QComboBox*>())
         combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
-    settings->installEventFilter(new KeepLayoutMinimum(settings));
+    new KeepLayoutMinimum(settings, scroll);
     connect(parameters_, &ParameterPanel::valuesProposed, this, &MainWindow::applyValues);
     connect(runOptions_, &RunOptionsPanel::optionsProposed, this, &MainWindow::applyOptions);
 

@@ -71,7 +71,7 @@ void LectureMode::setActive(bool on)
 namespace {
 
 const QList<int> lectureColumns{2000, 4000, 4000};
-const QList<int> lectureLeft{10000, 0}; // the settings are hidden
+const QList<int> lectureLeft{10000, 0}; // the settings folded away
 
 // Shares as pixels of the splitter's width (or height): QSplitter takes larger numbers
 // from the widgets without stretch, which left the left column most of the screen.
@@ -94,7 +94,7 @@ void LectureMode::arrangePanels(bool lecture)
 {
     // The 3D view and the charts are the lecture: they take four fifths of the width in
     // equal shares, the left column a fifth, and in it the navigator (the walk's
-    // equations) all of it; the settings below are hidden until lecture mode is left.
+    // equations) all of it; the settings below fold away (drag the handle up for them).
     // Proportions, not pixels: QSplitter shares its actual size out by them.
     auto save = [lecture](QSplitter* splitter, QList<int>& saved) {
         if (!splitter)
@@ -108,8 +108,6 @@ void LectureMode::arrangePanels(bool lecture)
     };
     save(columnSplitter(), desktopColumns_);
     save(leftSplitter(), desktopLeft_);
-    if (QSplitter* left = leftSplitter(); left && left->count() == 2)
-        left->widget(1)->setVisible(!lecture);
     if (lecture)
         applyShares();
 }

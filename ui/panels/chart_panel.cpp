@@ -185,8 +185,8 @@ int ChartPanel::columns(std::size_t slot) const
 bool ChartPanel::refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
                              std::optional<double> cursor)
 {
-    if (slot >= kinds || !views_[slot] || !views_[slot]->isVisibleTo(this))
-        return false; // hidden, or on another page
+    if (slot >= kinds || !views_[slot] || views_[slot]->isHidden())
+        return false; // a chart on another page is kept up too: it may be exported
     const int width = columns(slot);
     charts_[slot]->showTrack(track, width);
     if (comparison)

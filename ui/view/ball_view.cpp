@@ -330,22 +330,18 @@ void BallView::paintOverlay(QPainter& p)
 
 void BallView::setPresentationScale(double scale)
 {
-    if (!(scale > 0.0) || scale == scale_)
-        return;
-    scale_ = scale;
-    update();
+    if (scale > 0.0 && scale != scale_) {
+        scale_ = scale;
+        update();
+    }
 }
 
 float BallView::minimumBallPixels() const
 {
-    // A crowd keeps small dots (they would cover each other); up to a dozen balls are
-    // drawn at least 1/90 of the view's height across the radius (12 px on a 1080-pixel
-    // view), larger again in lecture mode.
-    if (layout_.balls > 100)
-        return float(2.0 * scale_);
-    if (layout_.balls > 12)
-        return float(5.0 * scale_);
-    return float(std::max(5.0, height() / 90.0) * scale_);
+    // A crowd keeps small dots (they would cover each other); up to a dozen balls are at
+    // least 1/90 of the view's height in radius (12 px of 1080), all larger in lecture mode.
+    const double pixels = layout_.balls > 100 ? 2.0 : layout_.balls > 12 ? 5.0 : std::max(5.0, height() / 90.0);
+    return float(pixels * scale_);
 }
 
 QVector3D BallView::ballAt(int i) const
