@@ -223,6 +223,7 @@ void settle()
 struct Arranged {
     std::unique_ptr<ab::ui::WindowShell> shell;
     ab::ui::MainWindow* window = nullptr;
+    bool ran = false; // the 200 steps came
 };
 
 Arranged arrange(SceneId scene, bool lecture, Language language)
@@ -240,7 +241,7 @@ Arranged arrange(SceneId scene, bool lecture, Language language)
     settle();
     for (int i = 0; i < 200; ++i)
         w.controller().stepOnce();
-    QTest::qWaitFor([&] { return w.controller().status().steps >= 200; });
+    a.ran = QTest::qWaitFor([&] { return w.controller().status().steps >= 200; });
     w.controller().poll();
     settle();
     a.window = &w;
@@ -278,6 +279,7 @@ private slots:
         QFETCH(bool, lecture);
         QFETCH(Language, language);
         Arranged a = arrange(scene, lecture, language);
+        QVERIFY(a.ran);
         ab::ui::MainWindow& w = *a.window;
         QVERIFY(w.frameGeometry().width() <= screenSize().width());
         QTabBar* pages = w.charts()->pages();
@@ -343,6 +345,7 @@ private slots:
         QFETCH(bool, lecture);
         QFETCH(Language, language);
         Arranged a = arrange(scene, lecture, language);
+        QVERIFY(a.ran);
         ab::ui::MainWindow& w = *a.window;
         const QRect screen = w.screen()->availableGeometry();
         std::vector<std::unique_ptr<QDialog>> dialogs;
