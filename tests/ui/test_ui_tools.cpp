@@ -21,9 +21,9 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTableView>
 #include <QTemporaryDir>
-#include <QRegularExpression>
 #include <QtTest>
 
 #include <cmath>
