@@ -13,6 +13,7 @@
 #include "tools/tools_menu.h"
 #include "view/ball_view.h"
 
+#include <QComboBox>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QMenuBar>
@@ -24,6 +25,38 @@
 #include <QVBoxLayout>
 
 namespace ab::ui {
+
+namespace {
+
+// Keeps the settings' combo boxes as wide as their longest item and the settings at least
+// as wide as their layout's minimum, as fonts and items change (a combo box's own minimum
+// is a dozen characters, whatever its size policy); none while their scroll area is
+// folded away (lecture mode), so that they do not widen the column.
+class KeepLayoutMinimum : public QObject {
+public:
+    KeepLayoutMinimum(QWidget* settings, QWidget* scroll) : QObject(settings), settings_(settings), scroll_(scroll)
+    {
+        settings->installEventFilter(this);
+        scroll->installEventFilter(this);
+    }
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        const QEvent::Type t = event->type();
+        if (t == QEvent::LayoutRequest || t == QEvent::Show || (watched == scroll_ && t == QEvent::Resize)) {
+            for (QComboBox* combo : settings_->findChildren<QComboBox*>())
+                combo->setMinimumWidth(combo->sizeHint().width());
+            const bool open = scroll_->height() > 0 && settings_->layout();
+            settings_->setMinimumWidth(open ? settings_->layout()->minimumSize().width() : 0);
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    QWidget* settings_;
+    QWidget* scroll_;
+};
+
+} // namespace
 
 void MainWindow::buildLayout()
 {
@@ -41,7 +74,7 @@ void MainWindow::buildLayout()
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 3);
     splitter->setStretchFactor(2, 2);
-    splitter->setSizes({340, 640, 480});
+    splitter->setSizes({400, 600, 480}); // the settings column as wide as its widest choice at 1400
     setCentralWidget(splitter);
     readout_ = new StatusReadout(statusBar());
     readout_->setFrameRate(view_ ? 0.0 : -1.0);
@@ -65,6 +98,10 @@ void MainWindow::buildLayout()
     connect(transport_, &TransportBar::viewTimeChanged, this, &MainWindow::refresh);
     connect(charts_, &ChartPanel::ballRequested, &controller_, &RunController::selectBall);
     connect(charts_, &ChartPanel::exportRequested, this, &MainWindow::exportInteractively);
+    connect(charts_, &ChartPanel::pageChanged, this, [this] {
+        if (controller_.hasRun())
+            refreshPanels(); // the charts of the new page were not drawn while off it
+    });
 }
 
 QWidget* MainWindow::buildLeftPanel()
@@ -88,7 +125,14 @@ QWidget* MainWindow::buildLeftPanel()
     scroll->setWidget(settings);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // A choice is never cut to fit the column: each combo box is as wide as its longest
+    // item, and the settings scroll sideways where the column is narrower. (A layout with
+    // wrapped labels has a height for its width, and QScrollArea then sets the width to
+    // the viewport's, below the layout's minimum, unless the widget's own minimum says no.)
+    for (QComboBox* combo : settings->findChildren<QComboBox*>())
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    new KeepLayoutMinimum(settings, scroll);
     connect(parameters_, &ParameterPanel::valuesProposed, this, &MainWindow::applyValues);
     connect(runOptions_, &RunOptionsPanel::optionsProposed, this, &MainWindow::applyOptions);
 
@@ -131,10 +175,19 @@ void MainWindow::buildMenus()
     presets_->addFileActions(file);
     file->addAction(tr("Export current chart..."), QKeySequence(tr("Ctrl+E")), this,
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Png); });
+    // Only the charts the stage shows: the menu is filled each time it opens.
     QMenu* charts = file->addMenu(tr("Export chart"));
-    for (ChartKind kind : allChartKinds())
-        charts->addAction(tr("%1 chart...").arg(QString::fromLatin1(chartKey(kind).data())), this,
-                          [this, kind] { exportInteractively(kind, ExportFormat::Png); });
+    charts->setObjectName("exportChartMenu");
+    auto fill = [this, charts] {
+        charts->clear();
+        for (ChartKind kind : charts_->shownCharts()) {
+            QAction* a = charts->addAction(tr("%1 chart...").arg(ChartPanel::chartName(kind)), this,
+                                           [this, kind] { exportInteractively(kind, ExportFormat::Png); });
+            a->setObjectName(QStringLiteral("export-%1").arg(QString::fromLatin1(chartKey(kind).data())));
+        }
+    };
+    connect(charts, &QMenu::aboutToShow, this, fill);
+    fill();
     file->addAction(tr("Export chart data as CSV..."), QKeySequence(tr("Ctrl+Shift+E")), this,
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Csv); });
     QAction* viewPng = file->addAction(tr("Export 3D view as PNG..."), this, [this] { exportViewInteractively(); });

@@ -47,7 +47,7 @@ public:
     double lengthScale() const override { return bounce_.maxHeight() > 0.0 ? bounce_.maxHeight() : 1.0; }
     std::string description() const override
     {
-        return "closed-form bounce (" + drag_ + "), Zeno time " + formatNumber(bounce_.restTime());
+        return "closed-form bounce (" + drag_ + "), Zeno time " + formatSignificant(bounce_.restTime(), 6) + " step";
     }
 
 private:
@@ -99,7 +99,7 @@ public:
     std::string description() const override
     {
         return "closed form, axes separate (bounce on y, walls on x and z), Zeno time " +
-               formatNumber(ball_.y.restTime());
+               formatSignificant(ball_.y.restTime(), 6) + " s";
     }
 
 private:
@@ -154,7 +154,7 @@ public:
     {
         return "closed form of the mirror-symmetric head-on meeting (the other ball acts as a wall with restitution "
                "e), Zeno time " +
-               formatNumber(ball_.y.restTime());
+               formatSignificant(ball_.y.restTime(), 6) + " s";
     }
 
 private:

@@ -327,6 +327,26 @@
         <source>Export the chart data as CSV...</source>
         <translation>Exportera diagrammens data som CSV...</translation>
     </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Hastighet</translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation>Energi</translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation>Rörelsemängd</translation>
+    </message>
+    <message>
+        <source>Activity</source>
+        <translation>Aktivitet</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::FigureActions</name>
@@ -1210,10 +1230,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Noggrannhetsstudie: %1</translation>
     </message>
     <message>
-        <source>Error against run time of the physical model&apos;s integrators on %1, each run measured against the scene&apos;s exact motion. Lower left is better; a steeper line is a higher order.</source>
-        <translation>Fel mot beräkningstid för den fysikaliska modellens integratorer för %1, där varje körning mäts mot etappens exakta rörelse. Längre ned till vänster är bättre; en brantare linje innebär högre ordning.</translation>
-    </message>
-    <message>
         <source>%v of %m runs</source>
         <translation>%v av %m körningar</translation>
     </message>
@@ -1336,6 +1352,26 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Export failed</source>
         <translation>Exporten misslyckades</translation>
+    </message>
+    <message>
+        <source>Error against run time of the physical model&apos;s integrators on %1, each run measured against the scene&apos;s exact motion, with impacts located inside the step and found at its end side by side. Lower left is better; where a line is straight its slope is the order, and a steeper line is a higher order.</source>
+        <translation>Fel mot beräkningstid för den fysikaliska modellens integratorer för %1, där varje körning mäts mot etappens exakta rörelse, med stötar lokaliserade inuti steget och funna vid stegets slut sida vid sida. Längre ned till vänster är bättre; där en linje är rak är dess lutning ordningen, och en brantare linje innebär högre ordning.</translation>
+    </message>
+    <message>
+        <source>In free fall the flight is a parabola, which Verlet and RK4 follow exactly; the linear drag b below (%1 when the scene has none) gives every integrator an error to show. With b = 0 the study is of the scene as it is.</source>
+        <translation>I fritt fall är banan en parabel, som Verlet och RK4 följer exakt; det linjära luftmotståndet b nedan (%1 när etappen saknar det) ger varje integrator ett fel att visa. Med b = 0 studeras etappen som den är.</translation>
+    </message>
+    <message>
+        <source>Between impacts the flight is a parabola, which Verlet and RK4 follow exactly: their error is the impacts&apos; alone, and round-off at the finest steps.</source>
+        <translation>Mellan stötarna är banan en parabel, som Verlet och RK4 följer exakt: deras fel kommer enbart från stötarna, och från avrundning vid de finaste stegen.</translation>
+    </message>
+    <message>
+        <source>&amp;drag b (%1)</source>
+        <translation>&amp;luftmotstånd b (%1)</translation>
+    </message>
+    <message>
+        <source>Linear air drag, force -b v (report equation 3.1); 0: none, where Verlet and RK4 are exact.</source>
+        <translation>Linjärt luftmotstånd, kraften -b v (rapportens ekvation 3.1); 0: inget, då Verlet och RK4 är exakta.</translation>
     </message>
 </context>
 <context>

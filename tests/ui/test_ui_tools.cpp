@@ -21,9 +21,12 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace ab;
 using namespace ab::ui;
@@ -64,12 +67,48 @@ class ToolsTest : public QObject {
     Q_OBJECT
 
 private slots:
+    void studyDefaultsShowTheOrdersBesideStepEndImpacts()
+    {
+        // bounce1d has no drag: the study adds b = 0.01, where Verlet and RK4 are not exact
+        // (a parabola they would follow to round-off). From dt = 10 to 1 the located
+        // impacts' errors then fall by 10^2 and 10^4 (orders 2 and 4, measured with
+        // amazeballs-cli study bounce1d --set b=0.01), the step-end impacts' by about 10^0.7.
+        StudyDialog dialog(testing::spec(SceneId::Bounce1d, {}, ModelKind::Physical));
+        QVERIFY(dialog.dragField());
+        QCOMPARE(dialog.dragField()->text(), QString("0.01"));
+        dialog.setSweep(600.0, 10.0, 1.0, 1, 1);
+        dialog.start();
+        dialog.job().waitForFinished();
+        QVERIFY(dialog.result() && dialog.result()->complete);
+        auto order = [&](ab::Integrator integrator, ab::ImpactMode impacts) {
+            double coarse = 0.0, fine = 0.0;
+            for (const study::Row& row : dialog.result()->rows)
+                if (row.method.integrator == integrator && row.method.impacts == impacts)
+                    (row.dt > 5.0 ? coarse : fine) = row.relativeError;
+            return std::log10(coarse / fine); // one decade of dt
+        };
+        const double verlet = order(ab::Integrator::Verlet, ab::ImpactMode::Located);
+        const double rk4 = order(ab::Integrator::Rk4, ab::ImpactMode::Located);
+        const double stepEnd = order(ab::Integrator::Rk4, ab::ImpactMode::StepEnd);
+        QVERIFY2(std::abs(verlet - 2.0) < 0.3, qPrintable(QString::number(verlet)));
+        QVERIFY2(std::abs(rk4 - 4.0) < 0.3, qPrintable(QString::number(rk4)));
+        QVERIFY2(stepEnd < 1.3, qPrintable(QString::number(stepEnd)));
+        // The Zeno time as a reader takes it down: six significant digits and its unit.
+        const QString reference = QString::fromStdString(dialog.result()->reference);
+        const QRegularExpressionMatch zeno = QRegularExpression("Zeno time ([0-9.]+) step").match(reference);
+        QVERIFY2(zeno.hasMatch(), qPrintable(reference));
+        QVERIFY2(zeno.captured(1).remove('.').size() <= 6, qPrintable(reference));
+    }
+
     void studyRunsASmallSweepToTheEndAndExportsIt()
     {
         const RunSpec spec = testing::spec(SceneId::Bounce1d, {}, ModelKind::Physical);
         StudyDialog dialog(spec);
         QVERIFY(dialog.available());
+        QVERIFY(dialog.dragField());
+        dialog.dragField()->setText("0"); // the scene as it is: the event integrator joins
         const std::size_t methods = study::allMethods(spec).size();
+        QCOMPARE(dialog.sweep().methods.size(), methods);
         dialog.setSweep(200.0, 1.0, 0.1, 1, 1); // dt = 1 and 0.1: two steps per method
         dialog.start();
         QVERIFY(dialog.running());

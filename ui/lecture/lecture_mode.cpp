@@ -68,26 +68,68 @@ void LectureMode::setActive(bool on)
     emit activeChanged(on);
 }
 
+namespace {
+
+const QList<int> lectureColumns{2000, 4000, 4000};
+const QList<int> lectureLeft{10000, 0}; // the settings folded away
+
+// Shares as pixels of the splitter's width (or height): QSplitter takes larger numbers
+// from the widgets without stretch, which left the left column most of the screen.
+QList<int> pixels(const QSplitter* splitter, const QList<int>& shares)
+{
+    const bool across = splitter->orientation() == Qt::Horizontal;
+    const int room = (across ? splitter->width() : splitter->height()) - splitter->handleWidth() * (shares.size() - 1);
+    int sum = 0;
+    for (int share : shares)
+        sum += share;
+    QList<int> out;
+    for (int share : shares)
+        out << std::max(0, room) * share / std::max(sum, 1);
+    return out;
+}
+
+} // namespace
+
 void LectureMode::arrangePanels(bool lecture)
 {
-    // The walk is the lecture: the left column (navigator over the settings) takes a third
-    // of the width and the navigator most of that column. Proportions, not pixels:
-    // QSplitter shares its actual size out by them.
-    auto* columns = window_ ? qobject_cast<QSplitter*>(window_->centralWidget()) : nullptr;
-    auto* left = navigator_ ? qobject_cast<QSplitter*>(navigator_->parentWidget()) : nullptr;
-    auto arrange = [lecture](QSplitter* splitter, QList<int>& saved, const QList<int>& shares) {
-        if (!splitter || splitter->count() != shares.size())
+    // The 3D view and the charts are the lecture: they take four fifths of the width in
+    // equal shares, the left column a fifth, and in it the navigator (the walk's
+    // equations) all of it; the settings below fold away (drag the handle up for them).
+    // Proportions, not pixels: QSplitter shares its actual size out by them.
+    auto save = [lecture](QSplitter* splitter, QList<int>& saved) {
+        if (!splitter)
             return;
         if (lecture) {
             saved = splitter->sizes();
-            splitter->setSizes(shares);
         } else if (!saved.isEmpty()) {
             splitter->setSizes(saved);
             saved.clear();
         }
     };
-    arrange(columns, desktopColumns_, {3200, 3800, 3000});
-    arrange(left, desktopLeft_, {7000, 3000});
+    save(columnSplitter(), desktopColumns_);
+    save(leftSplitter(), desktopLeft_);
+    if (lecture)
+        applyShares();
+}
+
+QSplitter* LectureMode::columnSplitter() const
+{
+    return window_ ? qobject_cast<QSplitter*>(window_->centralWidget()) : nullptr;
+}
+
+QSplitter* LectureMode::leftSplitter() const
+{
+    return navigator_ ? qobject_cast<QSplitter*>(navigator_->parentWidget()) : nullptr;
+}
+
+void LectureMode::applyShares()
+{
+    if (!active_)
+        return;
+    for (auto [splitter, shares] :
+         {std::pair{columnSplitter(), lectureColumns}, std::pair{leftSplitter(), lectureLeft}})
+        if (splitter && splitter->count() == shares.size())
+            splitter->setSizes(pixels(splitter, shares));
 }
 
 void LectureMode::next()
@@ -138,6 +180,10 @@ LectureMode::Command LectureMode::commandFor(const QKeyEvent& key) const
 
 bool LectureMode::eventFilter(QObject* watched, QEvent* event)
 {
+    // Full screen arrives as a resize after the panels were arranged: keep the shares.
+    if (event->type() == QEvent::Resize && active_ && watched == window_)
+        QMetaObject::invokeMethod(
+            this, [this] { applyShares(); }, Qt::QueuedConnection);
     if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
         return QObject::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);

@@ -15,6 +15,7 @@
 
 class QKeyEvent;
 class QMainWindow;
+class QSplitter;
 
 namespace ab::ui {
 
@@ -50,6 +51,9 @@ private:
     enum class Command { None, Next, Previous, FullScreen, LeaveFullScreen };
     Command commandFor(const QKeyEvent& key) const;
     void arrangePanels(bool lecture);
+    void applyShares();
+    QSplitter* columnSplitter() const;
+    QSplitter* leftSplitter() const;
 
     QPointer<QMainWindow> window_;
     QPointer<StageNavigator> navigator_;

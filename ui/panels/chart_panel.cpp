@@ -5,11 +5,18 @@
 #include <QContextMenuEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QMenu>
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStringList>
+#include <QTabBar>
 #include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
 
 namespace ab::ui {
 
@@ -18,6 +25,20 @@ namespace {
 std::size_t slot(ChartKind kind)
 {
     return static_cast<std::size_t>(kind);
+}
+
+// A legend above the plot while its entries fit in one row there (Qt Charts cuts them to
+// "..." rather than wrap), beside it, one entry a line, when they do not.
+void placeLegend(MotionChart* chart, int width)
+{
+    const QFontMetrics fm(chart->legend()->font());
+    int row = 0;
+    for (QLegendMarker* m : chart->legend()->markers())
+        if (m->isVisible() && m->series()->isVisible())
+            row += fm.horizontalAdvance(m->label()) + 2 * fm.height();
+    const Qt::Alignment side = row + 24 <= width ? Qt::AlignTop : Qt::AlignRight;
+    if (chart->legend()->alignment() != side)
+        chart->legend()->setAlignment(side);
 }
 
 } // namespace
@@ -37,9 +58,23 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     row->addWidget(ballCount_);
     row->addStretch(1);
     auto* hint = new QLabel(tr("Right-click a chart to export it"));
-    hint->setStyleSheet("color: #666;");
-    row->addWidget(hint);
+    hint->setObjectName("chartHint");
+    hint->setForegroundRole(QPalette::PlaceholderText); // the theme's quiet text, 4.5:1 in every theme
+    hint_ = hint;
+    row->addWidget(hint, 1);
     layout->addLayout(row);
+
+    pages_ = new QTabBar;
+    pages_->setObjectName("chartPages");
+    pages_->setExpanding(false);
+    pages_->setElideMode(Qt::ElideNone);
+    pages_->setUsesScrollButtons(false);
+    pages_->hide();
+    layout->addWidget(pages_);
+    connect(pages_, &QTabBar::currentChanged, this, [this](int page) {
+        if (!updating_ && page >= 0)
+            showPage(page);
+    });
 
     auto* splitter = new QSplitter(Qt::Vertical);
     for (ChartKind kind : allChartKinds()) {
@@ -50,9 +85,14 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
         view->setMinimumHeight(200); // title, legend and a readable plot (five charts need the scroll area)
         view->installEventFilter(this);
         view->viewport()->installEventFilter(this);
+        auto* holder = new QWidget;
+        auto* box = new QVBoxLayout(holder);
+        box->setContentsMargins(0, 0, 0, 0);
+        box->addWidget(view);
         charts_[slot(kind)] = chart;
         views_[slot(kind)] = view;
-        splitter->addWidget(view);
+        holders_[slot(kind)] = holder;
+        splitter->addWidget(holder);
     }
     applies_.fill(true);
     wanted_.fill(true);
@@ -90,6 +130,7 @@ void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double t
         charts_[i]->configure(scene, ball, units);
         charts_[i]->setTimeSpan(tEnd);
     }
+    paginate();
 }
 
 void ChartPanel::setChartShown(ChartKind kind, bool on)
@@ -97,6 +138,7 @@ void ChartPanel::setChartShown(ChartKind kind, bool on)
     const std::size_t i = slot(kind);
     wanted_[i] = on;
     views_[i]->setHidden(!(on && applies_[i]));
+    paginate();
 }
 
 bool ChartPanel::chartShown(ChartKind kind) const
@@ -144,7 +186,7 @@ bool ChartPanel::refreshSlot(std::size_t slot, const MotionTrack& track, const M
                              std::optional<double> cursor)
 {
     if (slot >= kinds || !views_[slot] || views_[slot]->isHidden())
-        return false;
+        return false; // a chart on another page is kept up too: it may be exported
     const int width = columns(slot);
     charts_[slot]->showTrack(track, width);
     if (comparison)
@@ -161,6 +203,122 @@ MotionChart* ChartPanel::chart(ChartKind kind) const
 QChartView* ChartPanel::chartView(ChartKind kind) const
 {
     return views_[slot(kind)];
+}
+
+std::vector<ChartKind> ChartPanel::shownCharts() const
+{
+    std::vector<ChartKind> out;
+    for (ChartKind kind : allChartKinds())
+        if (!views_[slot(kind)]->isHidden())
+            out.push_back(kind);
+    return out;
+}
+
+bool ChartPanel::onCurrentPage(ChartKind kind) const
+{
+    return views_[slot(kind)]->isVisibleTo(this);
+}
+
+int ChartPanel::readableChartHeight() const
+{
+    // Title, the legend's rows, the time axis's labels and title, and a plot at least as
+    // tall as the value axis's title is long (Qt Charts cuts a longer one to "...") and
+    // four tick labels high.
+    int tallest = 200;
+    for (ChartKind kind : shownCharts()) {
+        const MotionChart* c = charts_[slot(kind)];
+        const QFontMetrics title(c->titleFont()), legend(c->legend()->font());
+        const QFontMetrics labels(c->valueAxis()->labelsFont()), axisTitle(c->valueAxis()->titleFont());
+        int legendWidth = 0;
+        for (QLegendMarker* m : c->legend()->markers())
+            if (m->isVisible() && m->series()->isVisible())
+                legendWidth += legend.horizontalAdvance(m->label()) + 2 * legend.height() + 8;
+        const int width = std::max(views_[slot(kind)]->width(), 200);
+        const int legendRows = std::max(1, (legendWidth + width - 1) / width);
+        const int plot = std::max(axisTitle.horizontalAdvance(c->valueAxis()->titleText()) + 24, 6 * labels.height());
+        const int h = int(1.5 * title.height()) + int(1.5 * legend.height()) * legendRows + 2 * labels.height() +
+                      axisTitle.height() + plot + 24;
+        tallest = std::max(tallest, h);
+    }
+    return tallest;
+}
+
+void ChartPanel::paginate()
+{
+    for (ChartKind kind : shownCharts())
+        placeLegend(charts_[slot(kind)], views_[slot(kind)]->width());
+    const std::vector<ChartKind> kinds = shownCharts();
+    const int need = readableChartHeight();
+    const int header = layout()->itemAt(0) ? layout()->itemAt(0)->sizeHint().height() : 0;
+    const int room = height() - header - layout()->spacing();
+    std::size_t perPage = std::max<std::size_t>(1, std::size_t(std::max(room, 0) / need));
+    if (perPage < kinds.size()) // the tabs take a row of their own
+        perPage = std::max<std::size_t>(1, std::size_t(std::max(room - pages_->sizeHint().height(), 0) / need));
+    const int count = kinds.empty() ? 0 : int((kinds.size() + perPage - 1) / perPage);
+    const int current = pages_->currentIndex();
+    updating_ = true;
+    while (pages_->count() > count)
+        pages_->removeTab(pages_->count() - 1);
+    for (int p = 0; p < count; ++p) {
+        QStringList names;
+        for (std::size_t i = std::size_t(p) * perPage; i < std::min(kinds.size(), std::size_t(p + 1) * perPage); ++i) {
+            page_[slot(kinds[i])] = p;
+            names << chartName(kinds[i]);
+        }
+        const QString label = names.join(QStringLiteral(" + "));
+        if (p < pages_->count())
+            pages_->setTabText(p, label);
+        else
+            pages_->addTab(label);
+    }
+    pages_->setVisible(count > 1);
+    pages_->setCurrentIndex(std::clamp(current, 0, std::max(count - 1, 0)));
+    updating_ = false;
+    showPage(pages_->currentIndex());
+}
+
+void ChartPanel::showPage(int page)
+{
+    for (ChartKind kind : allChartKinds()) {
+        const std::size_t i = slot(kind);
+        holders_[i]->setVisible(shown(i) && (pages_->count() <= 1 || page_[i] == page));
+    }
+    emit pageChanged();
+}
+
+QString ChartPanel::chartName(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Position:
+        return tr("Position");
+    case ChartKind::Velocity:
+        return tr("Velocity");
+    case ChartKind::Energy:
+        return tr("Energy");
+    case ChartKind::Momentum:
+        return tr("Momentum");
+    case ChartKind::Activity:
+        return tr("Activity");
+    }
+    return {};
+}
+
+void ChartPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    // The export hint is a tip (the context menu says it too): shown where it fits whole.
+    const int used = ball_->sizeHint().width() + ballCount_->sizeHint().width() +
+                     ballCount_->fontMetrics().horizontalAdvance(tr("Charts of ball")) + 48;
+    hint_->setVisible(used + hint_->sizeHint().width() <= width());
+    paginate();
+}
+
+void ChartPanel::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) // lecture mode: larger charts need more room each
+        QMetaObject::invokeMethod(
+            this, [this] { paginate(); }, Qt::QueuedConnection); // after the charts' fonts
 }
 
 bool ChartPanel::eventFilter(QObject* watched, QEvent* event)

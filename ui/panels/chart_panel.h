@@ -3,6 +3,10 @@
 // energy, momentum and activity of the whole scene (each only where it applies), a ball chooser, and a context menu on
 // each chart to export it (PNG, SVG) or the data behind all of them (CSV). The chart last clicked or hovered is the
 // "current" one that Ctrl+E exports.
+// Where the panel is too short for every shown chart at a readable height (a chart's
+// labels would be cut), the charts are split into pages of as many as fit, one tab each
+// ("Position + Velocity", "Energy + Momentum"); a chart off the current page keeps its
+// wish to be shown (chartShown) and is drawn again when its page is chosen.
 #pragma once
 
 #include "ui/charts/motion_chart.h"
@@ -10,10 +14,12 @@
 #include <QWidget>
 
 #include <array>
+#include <vector>
 
 class QChartView;
 class QLabel;
 class QSpinBox;
+class QTabBar;
 
 namespace ab::ui {
 
@@ -49,24 +55,46 @@ public:
     MotionChart* chart(ChartKind kind) const;
     QChartView* chartView(ChartKind kind) const;
     ChartKind currentChart() const { return current_; }
+    // The charts the scene shows (applying and wished for), in order, on any page.
+    std::vector<ChartKind> shownCharts() const;
+    // The pages' tabs (hidden while every shown chart fits on one page).
+    QTabBar* pages() const { return pages_; }
+    // The smallest height at which a chart keeps its title, legend and axis labels whole,
+    // at the current chart font.
+    int readableChartHeight() const;
+    // Whether the chart is on the current page (and shown).
+    bool onCurrentPage(ChartKind kind) const;
+    static QString chartName(ChartKind kind); // "Position", translated
 
 signals:
+    void pageChanged();
+
     void ballRequested(int ball);
     void exportRequested(ab::ui::ChartKind kind, ab::ui::ExportFormat format);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
+    // Splits the shown charts into pages that fit the panel's height.
+    void paginate();
+    void showPage(int page);
+    bool shown(std::size_t slot) const { return wanted_[slot] && applies_[slot]; }
     static constexpr std::size_t kinds = kSlots;
     // How many points a track is thinned to for the chart in `slot`.
     int columns(std::size_t slot) const;
     std::array<MotionChart*, kinds> charts_{};
     std::array<QChartView*, kinds> views_{};
+    std::array<QWidget*, kinds> holders_{}; // each view in a holder: the page hides the holder
+    std::array<int, kinds> page_{};
+    QTabBar* pages_;
     std::array<bool, kinds> applies_{};
     std::array<bool, kinds> wanted_{};
     QSpinBox* ball_;
     QLabel* ballCount_;
+    QLabel* hint_;
     ChartKind current_ = ChartKind::Position;
     bool updating_ = false;
 };

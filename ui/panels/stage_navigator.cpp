@@ -5,6 +5,7 @@
 
 #include <QButtonGroup>
 #include <QEvent>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -39,7 +40,8 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
     setObjectName("stageNavigator");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* row = new QHBoxLayout;
+    // Two by two: four in a row made the lecture font's left column half the screen wide.
+    auto* row = new QGridLayout;
     row->setSpacing(2);
     const auto& scenes = allScenes();
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -50,7 +52,7 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
         b->setFocusPolicy(Qt::NoFocus);
         b->setObjectName(QStringLiteral("stage-%1").arg(QString::fromStdString(s.key)));
         buttons_->addButton(b, static_cast<int>(i));
-        row->addWidget(b);
+        row->addWidget(b, int(i) / 2, int(i) % 2);
     }
     buttons_->setExclusive(true);
     layout->addLayout(row);

@@ -114,8 +114,10 @@ void WindowShell::applyAppearance()
 {
     applyToApplication(appearance_);
     applyToCharts(window_.get(), appearance_);
-    if (BallView* view = window_->view())
+    if (BallView* view = window_->view()) {
         view->setBackground(surfaceColours(appearance_.theme).background);
+        view->setPresentationScale(appearance_.scale);
+    }
     recolourBalls();
 }
 

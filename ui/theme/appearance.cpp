@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "appearance.h"
 
+#include "theme_style.h"
+
 #include <QAbstractAxis>
 #include <QApplication>
 #include <QChart>
@@ -32,7 +34,7 @@ QFont scaled(QFont font, double scale)
     return font;
 }
 
-void styleSeries(QXYSeries* series, const Appearance& a)
+void styleSeries(QXYSeries* series, const Appearance& a, const QColor& plotArea)
 {
     QPen pen = base<QPen>(series, "ab_basePen", [series] { return series->pen(); });
     pen.setWidthF(pen.widthF() * a.scale);
@@ -43,7 +45,9 @@ void styleSeries(QXYSeries* series, const Appearance& a)
         colour = surfaceColours(a.theme).text;
     else if (isDark(a.theme) && colour.lightnessF() < 0.45f)
         colour = colour.lighter(150); // dark blues and purples vanish on a dark background
-    pen.setColor(colour);
+    // Every line 3:1 against the plot (WCAG 1.4.11): orange and light green on white,
+    // red and purple on the dark plot, would be below it.
+    pen.setColor(withContrast(colour, plotArea, 3.0));
     series->setPen(pen);
 }
 
@@ -73,6 +77,12 @@ void applyToApplication(const Appearance& a)
     if (!app)
         return;
     const QFont font = base<QFont>(app, "ab_baseFont", [] { return QApplication::font(); });
+    auto* style = qobject_cast<ThemeStyle*>(QApplication::style());
+    if (!style) {
+        style = new ThemeStyle; // the application owns it
+        QApplication::setStyle(style);
+    }
+    style->setFieldBorder(fieldBorder(a.theme));
     QApplication::setPalette(themePalette(a.theme));
     QApplication::setFont(scaled(font, a.scale));
 }
@@ -94,7 +104,7 @@ void applyToChart(QChart* chart, const Appearance& a)
         styleAxis(axis, a, c);
     for (QAbstractSeries* series : chart->series())
         if (auto* xy = qobject_cast<QXYSeries*>(series))
-            styleSeries(xy, a);
+            styleSeries(xy, a, c.plotArea);
 }
 
 void applyToCharts(QWidget* root, const Appearance& a)

@@ -96,13 +96,15 @@ QPalette themePalette(Theme theme)
 {
     switch (theme) {
     case Theme::Light:
+        // Greyed-out text 4.6:1 on the window, white on the highlight 5.4:1 (WCAG AA, 4.5:1).
         return makePalette(QColor(0xef, 0xef, 0xef), Qt::white, QColor(0xf5, 0xf5, 0xf5), Qt::black,
-                           QColor(0xef, 0xef, 0xef), QColor(0x30, 0x8c, 0xc6), Qt::white, QColor(0x80, 0x80, 0x80),
+                           QColor(0xef, 0xef, 0xef), QColor(0x1f, 0x6f, 0xa8), Qt::white, QColor(0x6b, 0x6b, 0x6b),
                            QColor(0x00, 0x55, 0xaa));
     case Theme::Dark:
+        // Greyed-out text 4.6:1 on a button, white on the highlight 5.4:1.
         return makePalette(QColor(0x2b, 0x2d, 0x31), QColor(0x1e, 0x1f, 0x22), QColor(0x26, 0x28, 0x2b),
-                           QColor(0xe6, 0xe6, 0xe6), QColor(0x3a, 0x3d, 0x42), QColor(0x3d, 0x8e, 0xd8), Qt::white,
-                           QColor(0x8a, 0x8a, 0x8a), QColor(0x6c, 0xb4, 0xff));
+                           QColor(0xe6, 0xe6, 0xe6), QColor(0x3a, 0x3d, 0x42), QColor(0x2a, 0x6c, 0xb0), Qt::white,
+                           QColor(0xb0, 0xb0, 0xb0), QColor(0x6c, 0xb4, 0xff));
     case Theme::HighContrastLight:
         // Black on white, a blue highlight with white text (contrast above 7:1, WCAG AAA).
         return makePalette(Qt::white, Qt::white, QColor(0xf0, 0xf0, 0xf0), Qt::black, Qt::white,
@@ -114,12 +116,60 @@ QPalette themePalette(Theme theme)
     throw std::logic_error("theme without a palette");
 }
 
+QColor fieldBorder(Theme theme)
+{
+    // 3:1 at least against both the window around a field and the base inside it (WCAG
+    // 1.4.11): Fusion's own frame (the window colour, darker) is 2.3:1 in the light theme
+    // and black on black in the high-contrast dark one.
+    switch (theme) {
+    case Theme::Light:
+        return QColor(0x6b, 0x6b, 0x6b);
+    case Theme::Dark:
+        return QColor(0x9a, 0x9a, 0x9a);
+    case Theme::HighContrastLight:
+        return Qt::black;
+    case Theme::HighContrastDark:
+        return Qt::white;
+    }
+    throw std::logic_error("theme without a field border");
+}
+
+double relativeLuminance(const QColor& c)
+{
+    // WCAG 2.1, "relative luminance": the sRGB channels linearised, weighted by the eye's
+    // sensitivity (www.w3.org/TR/WCAG21/#dfn-relative-luminance).
+    auto linear = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    return 0.2126 * linear(c.redF()) + 0.7152 * linear(c.greenF()) + 0.0722 * linear(c.blueF());
+}
+
+double contrastRatio(const QColor& a, const QColor& b)
+{
+    // WCAG 2.1 contrast ratio (L1 + 0.05) / (L2 + 0.05), L1 the lighter.
+    const double la = relativeLuminance(a), lb = relativeLuminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+QColor withContrast(const QColor& colour, const QColor& background, double ratio)
+{
+    // Lighter on a dark background, darker on a light one, in small steps of HSL
+    // lightness (the hue stays), until the ratio holds; black or white at the end.
+    const bool dark = relativeLuminance(background) < 0.18;
+    QColor c = colour;
+    for (int i = 0; i < 100 && contrastRatio(c, background) < ratio; ++i) {
+        float h, s, l, a;
+        c.getHslF(&h, &s, &l, &a);
+        l = dark ? std::min(1.0f, l + 0.02f) : std::max(0.0f, l - 0.02f);
+        c = QColor::fromHslF(h, s, l, a);
+    }
+    return c;
+}
+
 SurfaceColours surfaceColours(Theme theme)
 {
     switch (theme) {
     case Theme::Light: // the 3D view's and the charts' own colours before themes existed
         return {QColor(0xec, 0xf0, 0xf5), Qt::white, QColor(0x30, 0x30, 0x30), QColor(0xd8, 0xd8, 0xd8),
-                QColor(0x80, 0x80, 0x80)};
+                QColor(0x70, 0x70, 0x70)};
     case Theme::Dark:
         return {QColor(0x1e, 0x1f, 0x22), QColor(0x26, 0x28, 0x2b), QColor(0xe6, 0xe6, 0xe6), QColor(0x4a, 0x4d, 0x52),
                 QColor(0xa0, 0xa0, 0xa0)};

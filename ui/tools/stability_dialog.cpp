@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "stability_dialog.h"
 
+#include "dialog_fit.h"
+
 #include "core/io/atomic_file.h"
 
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -50,7 +53,7 @@ std::vector<stability::CaseRow> rowsOf(int scope, const std::string& caseName, S
 StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(parent), scene_(scene)
 {
     setWindowTitle(tr("Stability suite"));
-    auto* layout = new QVBoxLayout(this);
+    auto* layout = scrollingContent(this);
     auto* intro = new QLabel(tr("Stiff and extreme runs of both models, each checked every step for energy gained, "
                                 "penetration, escaped balls and non-finite values. Hover a row for its note."));
     intro->setWordWrap(true);
@@ -74,19 +77,14 @@ StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(paren
     table_->setSortingEnabled(true);
     table_->sortByColumn(-1, Qt::AscendingOrder); // the suite's order until a header is clicked
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
-    table_->horizontalHeader()->setStretchLastSection(true);
+    // Every column as wide as its widest cell or header, so nothing is cut to "..."; the
+    // table scrolls sideways where the dialog is narrower than all of them.
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(false);
+    table_->setTextElideMode(Qt::ElideNone);
     table_->verticalHeader()->setVisible(false);
     table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     table_->setWordWrap(false);
-    // Widths for the usual contents: the setting says most about a row.
-    using M = StabilityTableModel;
-    const std::pair<int, int> widths[] = {
-        {M::Case, 115},         {M::Model, 70},           {M::Integrator, 125},  {M::Setting, 330},
-        {M::VerdictColumn, 95}, {M::EnergyGain, 120},     {M::Penetration, 120}, {M::Escaped, 65},
-        {M::Nonfinite, 75},     {M::ReferenceError, 115}, {M::Dt, 70},           {M::CpuSeconds, 95}};
-    for (const auto& [column, width] : widths)
-        table_->setColumnWidth(column, width);
     layout->addWidget(table_, 1);
     layout->addWidget(buildLegend());
 
@@ -107,7 +105,7 @@ StabilityDialog::StabilityDialog(SceneId scene, QWidget* parent) : QDialog(paren
         progress_->setValue(done);
     });
     setRunning(false);
-    resize(1560, 760);
+    fitToScreen(this, QSize(1560, 760));
 }
 
 QWidget* StabilityDialog::buildControls()
@@ -155,10 +153,12 @@ QWidget* StabilityDialog::buildControls()
 
 QWidget* StabilityDialog::buildLegend()
 {
-    auto* row = new QWidget;
-    auto* h = new QHBoxLayout(row);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(new QLabel(tr("Legend:")));
+    // Two columns of swatch and meaning, the meanings wrapped: a single row ran off a
+    // 1600-pixel screen in lecture mode.
+    auto* box = new QWidget;
+    auto* grid = new QGridLayout(box);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->addWidget(new QLabel(tr("Legend:")), 0, 0, Qt::AlignTop);
     const QColor base = palette().color(QPalette::Base);
     const std::pair<Verdict, QString> entries[] = {
         {Verdict::Failed, tr("energy grew past the limit, a ball escaped, or a value became non-finite")},
@@ -166,19 +166,22 @@ QWidget* StabilityDialog::buildLegend()
         {Verdict::Ok, tr("held")},
         {Verdict::NotRun, tr("not in this build or not run")},
     };
+    int index = 0;
     for (const auto& [verdict, meaning] : entries) {
         auto* swatch = new QLabel(verdictText(verdict));
         const QColor c = verdictBackground(verdict, base);
         swatch->setStyleSheet(QString("QLabel { background: %1; border: 1px solid palette(mid); padding: 1px 6px; }")
                                   .arg((c.isValid() ? c : base).name()));
-        h->addWidget(swatch);
         auto* text = new QLabel(meaning);
-        text->setEnabled(verdict != Verdict::NotRun);
-        h->addWidget(text);
-        h->addSpacing(10);
+        text->setWordWrap(true);
+        const int row = index / 2, column = 1 + 2 * (index % 2);
+        grid->addWidget(swatch, row, column, Qt::AlignTop);
+        grid->addWidget(text, row, column + 1);
+        ++index;
     }
-    h->addStretch(1);
-    return row;
+    grid->setColumnStretch(2, 1);
+    grid->setColumnStretch(4, 1);
+    return box;
 }
 
 void StabilityDialog::selectCase(const QString& name)

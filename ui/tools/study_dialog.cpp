@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "study_dialog.h"
 
+#include "dialog_fit.h"
+
 #include "ui/charts/chart_export.h"
 #include "ui/charts/work_precision_chart.h"
 
 #include "core/io/atomic_file.h"
+#include "core/reference/reference.h"
 
 #include <QChart>
 #include <QChartView>
@@ -63,16 +66,13 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     } catch (const InputError& e) {
         unavailable_ = QString::fromUtf8(e.what());
     }
-    auto* layout = new QVBoxLayout(this);
+    auto* layout = scrollingContent(this);
     if (!options_) {
         layout->addWidget(buildUnavailable());
-        resize(560, 220);
+        fitToScreen(this, QSize(560, 220));
         return;
     }
-    auto* intro = new QLabel(tr("Error against run time of the physical model's integrators on %1, each run measured "
-                                "against the scene's exact motion. Lower left is better; a steeper line is a higher "
-                                "order.")
-                                 .arg(qs(info.title)));
+    auto* intro = new QLabel(introText(spec));
     intro->setWordWrap(true);
     layout->addWidget(intro);
     layout->addWidget(buildSweepRow());
@@ -125,7 +125,26 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     });
     clearChart();
     setRunning(false);
-    resize(1000, 900);
+    fitToScreen(this, QSize(1000, 900));
+}
+
+QString StudyDialog::introText(const RunSpec& spec)
+{
+    const SceneInfo& info = sceneInfo(spec.scene);
+    const QString what = tr("Error against run time of the physical model's integrators on %1, each run measured "
+                            "against the scene's exact motion, with impacts located inside the step and found at "
+                            "its end side by side. Lower left is better; where a line is straight its slope is the "
+                            "order, and a steeper line is a higher order.")
+                             .arg(qs(info.title));
+    if (spec.scene == SceneId::Bounce1d)
+        return what + " " +
+               tr("In free fall the flight is a parabola, which Verlet and RK4 follow exactly; the linear drag b "
+                  "below (%1 when the scene has none) gives every integrator an error to show. With b = 0 the "
+                  "study is of the scene as it is.")
+                   .arg(qs(formatNumber(kStudyDrag)));
+    return what + " " +
+           tr("Between impacts the flight is a parabola, which Verlet and RK4 follow exactly: their error is the "
+              "impacts' alone, and round-off at the finest steps.");
 }
 
 QWidget* StudyDialog::buildUnavailable()
@@ -181,6 +200,13 @@ QWidget* StudyDialog::buildSweepRow()
     label(tr("&to"), dtMin_, tr("The finest step; steps between are spaced evenly on a log scale."));
     label(tr("&per decade"), perDecade_, tr("Steps tried per factor of ten."));
     label(tr("&repeats"), repeats_, tr("Timed repeats of each run; the median CPU time is shown."));
+    if (spec_.scene == SceneId::Bounce1d && spec_.params.real("c") == 0.0) {
+        const double b = spec_.params.real("b") > 0.0 ? spec_.params.real("b") : kStudyDrag;
+        drag_ = numberField(b);
+        drag_->setObjectName("studyDrag");
+        label(tr("&drag b (%1)").arg(qs(spec_.params.spec("b").unit)), drag_,
+              tr("Linear air drag, force -b v (report equation 3.1); 0: none, where Verlet and RK4 are exact."));
+    }
     h->addStretch(1);
     run_ = new QPushButton(tr("Run"));
     run_->setDefault(true);
@@ -208,6 +234,11 @@ study::Options StudyDialog::sweep() const
         throw InputError("dt to: " + formatNumber(dtMin) + " needs more than 1e9 steps to reach t end " +
                          formatNumber(o.tEnd));
     o.repeats = repeats_->value();
+    if (drag_) {
+        o.base.params.parse("b", drag_->text().trimmed().toStdString()); // InputError naming b
+        o.methods = study::allMethods(o.base);                           // the event integrator flies without drag only
+        reference::makeReference(o.base, o.tEnd);
+    }
     return o;
 }
 
@@ -310,8 +341,9 @@ void StudyDialog::setRunning(bool running)
 {
     run_->setEnabled(!running);
     cancel_->setEnabled(running);
-    for (QWidget* w : std::initializer_list<QWidget*>{tEnd_, dtMax_, dtMin_, perDecade_, repeats_})
-        w->setEnabled(!running);
+    for (QWidget* w : std::initializer_list<QWidget*>{tEnd_, dtMax_, dtMin_, perDecade_, repeats_, drag_})
+        if (w)
+            w->setEnabled(!running);
     const bool exportable = !running && result_ && result_->complete && !result_->rows.empty();
     exportCsv_->setEnabled(exportable);
     exportChart_->setEnabled(exportable);

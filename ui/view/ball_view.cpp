@@ -268,7 +268,7 @@ RenderInputs BallView::renderInputs() const
     in.projection = camera_.projection(aspect);
     in.pixelsPerUnit = camera_.pixelsPerUnit(height());
     in.radius = float(layout_.ballRadius);
-    in.minPixels = layout_.balls > 100 ? 2.0f : 5.0f;
+    in.minPixels = minimumBallPixels();
     in.selected = layout_.balls > 1 ? selected_ : -1; // one ball needs no marking
     in.floorY = float(layout_.floorY);
     // A few balls get a cue that darkens as they come down; a crowd (thousands, piling up
@@ -307,7 +307,7 @@ void BallView::paintOverlay(QPainter& p)
 {
     p.setRenderHint(QPainter::Antialiasing);
     QFont font = p.font();
-    font.setPointSizeF(10.0);
+    font.setPointSizeF(10.0 * scale_);
     p.setFont(font);
     QPointF at;
     for (const SceneLabel& label : geometry_.labels)
@@ -315,16 +315,33 @@ void BallView::paintOverlay(QPainter& p)
             drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
     // The vertical scene reads its height off the scale: label the ball with it.
     if (!layout_.walls && balls_.size() >= 3 && ballPixel(0, at))
-        drawHaloText(p, at + QPointF(14.0, 0.0), QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1),
-                     QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
+        drawHaloText(p, at + QPointF(14.0 * scale_ + minimumBallPixels(), 0.0),
+                     QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
+                     Qt::AlignLeft);
     if (!ghostLegend_.isEmpty())
-        drawHaloText(p, QPointF(12, 20), ghostLegend_, QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
+        drawHaloText(p, QPointF(12, 20 * scale_), ghostLegend_, QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
     if (!glError_.isEmpty())
-        drawHaloText(p, QPointF(12, 40), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
+        drawHaloText(p, QPointF(12, 44 * scale_), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
     if (keyFocus_)
-        drawHaloText(p, QPointF(12, height() - 14),
+        drawHaloText(p, QPointF(12, height() - 14 * scale_),
                      tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
                      QColor(0x30, 0x30, 0x30), Qt::AlignLeft);
+}
+
+void BallView::setPresentationScale(double scale)
+{
+    if (scale > 0.0 && scale != scale_) {
+        scale_ = scale;
+        update();
+    }
+}
+
+float BallView::minimumBallPixels() const
+{
+    // A crowd keeps small dots (they would cover each other); up to a dozen balls are at
+    // least 1/90 of the view's height in radius (12 px of 1080), all larger in lecture mode.
+    const double pixels = layout_.balls > 100 ? 2.0 : layout_.balls > 12 ? 5.0 : std::max(5.0, height() / 90.0);
+    return float(pixels * scale_);
 }
 
 QVector3D BallView::ballAt(int i) const

@@ -53,6 +53,13 @@ public:
     // The balls' colours (0xRRGGBB, one per ball) and the clear colour, for the window's theme.
     void setColours(std::vector<unsigned> colours);
     void setBackground(const QColor& colour);
+    // Lecture mode: the labels, the height scale's numbers and the smallest drawn ball
+    // grow by `scale` (1 on the desktop).
+    void setPresentationScale(double scale);
+    double presentationScale() const { return scale_; }
+    // The smallest radius a ball is drawn with, in pixels: a few balls stay large enough
+    // to follow from the back of a hall (a 0.5 m ball in the 300 m box is otherwise a dot).
+    float minimumBallPixels() const;
     void resetView();
     // Turns the camera about the vertical through the target (the window's turntable).
     void turn(float yawDegrees);
@@ -119,6 +126,7 @@ private:
     bool keyFocus_ = false;
     bool framePending_ = true;
     bool cameraMoved_ = false;
+    double scale_ = 1.0;
 };
 
 // Colour of each ball as 0xRRGGBB: fixed, distinct colours for one or two balls; for

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// Every theme meets WCAG 2.1 AA, measured with the standard's own relative-luminance
+// formula (written out here, not the program's): text 4.5:1 against the background it
+// is drawn on (every palette role pair, greyed-out text included, and the charts' titles,
+// axis labels and legends); 3:1 for what is not text (field borders, the media icons as
+// painted, every chart line and the time cursor, axis lines), in each theme with and
+// without the colour-blind-safe palette, for every chart of every scene, compared and not.
+#include "ui/charts/motion_chart.h"
+#include "ui/theme/appearance.h"
+#include "ui/theme/theme.h"
+#include "ui/theme/theme_style.h"
+
+#include <QAbstractAxis>
+#include <QApplication>
+#include <QImage>
+#include <QLegend>
+#include <QLineSeries>
+#include <QPainter>
+#include <QtTest>
+
+#include <cmath>
+
+using ab::ui::Theme;
+
+namespace {
+
+// WCAG 2.1 relative luminance (www.w3.org/TR/WCAG21/#dfn-relative-luminance) and
+// contrast ratio (#dfn-contrast-ratio).
+double luminance(const QColor& c)
+{
+    auto channel = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    return 0.2126 * channel(c.redF()) + 0.7152 * channel(c.greenF()) + 0.0722 * channel(c.blueF());
+}
+
+double ratio(const QColor& a, const QColor& b)
+{
+    const double la = luminance(a), lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+QString why(const char* what, const QColor& fg, const QColor& bg)
+{
+    return QStringLiteral("%1: %2 on %3 is %4:1").arg(what, fg.name(), bg.name()).arg(ratio(fg, bg), 0, 'f', 2);
+}
+
+#define CHECK_CONTRAST(what, fg, bg, least) QVERIFY2(ratio(fg, bg) >= (least), qPrintable(why(what, fg, bg)))
+
+void addThemeRows()
+{
+    QTest::addColumn<Theme>("theme");
+    for (Theme t : ab::ui::allThemes())
+        QTest::newRow(qPrintable(ab::ui::themeKey(t))) << t;
+}
+
+} // namespace
+
+class UiContrast : public QObject {
+    Q_OBJECT
+private slots:
+    void paletteTextIsAtLeastFourAndAHalfToOne_data() { addThemeRows(); }
+    void paletteTextIsAtLeastFourAndAHalfToOne()
+    {
+        QFETCH(Theme, theme);
+        const QPalette p = ab::ui::themePalette(theme);
+        using R = QPalette;
+        const std::pair<R::ColorRole, R::ColorRole> pairs[] = {
+            {R::WindowText, R::Window},
+            {R::Text, R::Base},
+            {R::Text, R::AlternateBase},
+            {R::ButtonText, R::Button},
+            {R::HighlightedText, R::Highlight},
+            {R::ToolTipText, R::ToolTipBase},
+            {R::PlaceholderText, R::Base},
+            {R::PlaceholderText, R::Window},
+            {R::Link, R::Base},
+            {R::Link, R::Window},
+        };
+        for (const auto& [fg, bg] : pairs) {
+            CHECK_CONTRAST("active", p.color(R::Active, fg), p.color(R::Active, bg), 4.5);
+            // Greyed-out fields (the report model's fixed integrator) are read too.
+            CHECK_CONTRAST("disabled", p.color(R::Disabled, fg), p.color(R::Disabled, bg), 4.5);
+        }
+    }
+
+    void fieldBordersAndFocusAreAtLeastThreeToOne_data() { addThemeRows(); }
+    void fieldBordersAndFocusAreAtLeastThreeToOne()
+    {
+        QFETCH(Theme, theme);
+        const QPalette p = ab::ui::themePalette(theme);
+        const QColor border = ab::ui::fieldBorder(theme);
+        CHECK_CONTRAST("border on window", border, p.color(QPalette::Window), 3.0);
+        CHECK_CONTRAST("border on field", border, p.color(QPalette::Base), 3.0);
+        CHECK_CONTRAST("focus frame on window", p.color(QPalette::Link), p.color(QPalette::Window), 3.0);
+        CHECK_CONTRAST("focus frame on field", p.color(QPalette::Link), p.color(QPalette::Base), 3.0);
+    }
+
+    void mediaIconsAreAtLeastThreeToOne_data() { addThemeRows(); }
+    void mediaIconsAreAtLeastThreeToOne()
+    {
+        QFETCH(Theme, theme);
+        ab::ui::applyToApplication({theme, false, 1.0});
+        auto* style = qobject_cast<ab::ui::ThemeStyle*>(QApplication::style());
+        QVERIFY(style);
+        const QColor button = QApplication::palette().color(QPalette::Button);
+        for (QStyle::StandardPixmap icon :
+             {QStyle::SP_MediaPlay, QStyle::SP_MediaPause, QStyle::SP_MediaSkipForward, QStyle::SP_MediaSkipBackward}) {
+            // The icon as painted on the button's colour: its most distinct pixel.
+            QImage image(32, 32, QImage::Format_RGB32);
+            image.fill(button);
+            QPainter painter(&image);
+            style->standardIcon(icon).paint(&painter, image.rect());
+            painter.end();
+            double best = 1.0;
+            QColor strongest = button;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    if (const QColor c = image.pixelColor(x, y); ratio(c, button) > best) {
+                        best = ratio(c, button);
+                        strongest = c;
+                    }
+            CHECK_CONTRAST("icon", strongest, button, 3.0);
+        }
+        ab::ui::applyToApplication({Theme::Light, false, 1.0});
+    }
+
+    void chartTextAndLinesMeetAa_data()
+    {
+        QTest::addColumn<Theme>("theme");
+        QTest::addColumn<bool>("safe");
+        for (Theme t : ab::ui::allThemes())
+            for (bool safe : {false, true})
+                QTest::newRow(qPrintable(ab::ui::themeKey(t) + (safe ? " colour-blind-safe" : ""))) << t << safe;
+    }
+    void chartTextAndLinesMeetAa()
+    {
+        QFETCH(Theme, theme);
+        QFETCH(bool, safe);
+        const ab::ui::SurfaceColours c = ab::ui::surfaceColours(theme);
+        CHECK_CONTRAST("chart text", c.text, c.background, 4.5);
+        CHECK_CONTRAST("chart text on plot", c.text, c.plotArea, 4.5);
+        CHECK_CONTRAST("axis line", c.axisLine, c.plotArea, 3.0);
+        for (const ab::SceneInfo* scene : ab::allScenes())
+            for (ab::ui::ChartKind kind : ab::ui::allChartKinds()) {
+                ab::ui::MotionChart chart(kind);
+                chart.configure(*scene, 0, {true, scene->id == ab::SceneId::Bounce1d});
+                chart.setComparison("report", "physical rk4");
+                chart.setCursorTime(1.0);
+                ab::ui::applyToChart(&chart, {theme, safe, 1.0});
+                CHECK_CONTRAST("title", chart.titleBrush().color(), c.background, 4.5);
+                CHECK_CONTRAST("legend", chart.legend()->labelColor(), c.background, 4.5);
+                for (QAbstractAxis* axis : chart.axes()) {
+                    CHECK_CONTRAST("tick labels", axis->labelsColor(), c.background, 4.5);
+                    CHECK_CONTRAST("axis title", axis->titleBrush().color(), c.background, 4.5);
+                    CHECK_CONTRAST("axis line", axis->linePen().color(), c.plotArea, 3.0);
+                }
+                for (QAbstractSeries* s : chart.series()) {
+                    auto* line = qobject_cast<QLineSeries*>(s);
+                    QVERIFY(line);
+                    CHECK_CONTRAST(
+                        qPrintable(QStringLiteral("%1 line '%2'")
+                                       .arg(QString::fromLatin1(ab::ui::chartKey(kind).data()), line->name())),
+                        line->pen().color(), c.plotArea, 3.0);
+                }
+                CHECK_CONTRAST("cursor", chart.cursorLine()->pen().color(), c.plotArea, 3.0);
+            }
+    }
+};
+
+QTEST_MAIN(UiContrast)
+#include "test_ui_contrast.moc"
