@@ -5,6 +5,7 @@
 #include "charts/chart_export.h"
 #include "export_files.h"
 #include "figures/figure_actions.h"
+#include "video/animation_actions.h"
 #include "i18n/core_text.h"
 #include "panels/parameter_panel.h"
 #include "panels/stage_navigator.h"
@@ -184,6 +185,7 @@ void MainWindow::buildMenus()
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Csv); });
     QAction* viewPng = file->addAction(tr("Export 3D view as PNG..."), this, [this] { exportViewInteractively(); });
     viewPng->setEnabled(view_ != nullptr);
+    (new AnimationActions(this))->addToFileMenu(file);
     file->addSeparator();
     file->addAction(tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
 

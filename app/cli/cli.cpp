@@ -33,8 +33,9 @@ const std::array commands{
             "                            --chart position|velocity|energy --out FILE.png|FILE.svg [--ball B]\n"
             "                            [--width W] [--height H] and the run options (B = 1 is the first ball)",
             chartCommand},
-    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
-                         "                            the stiff and extreme cases, one row per model and integrator",
+    Command{"stability",
+            "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+            "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},
     Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
             studyCommand},
@@ -42,6 +43,12 @@ const std::array commands{
             "figure 2.5|2.6|2.7|3.1     the report's figure redrawn from the report model, headless:\n"
             "                            --out FILE.png|FILE.svg [--width W] [--height H]",
             figureCommand},
+    Command{"video",
+            "video SCENE [options]     the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL):\n"
+            "                            --out FILE.mp4|FILE.webm|FILE.gif [--size WxH|720p|1080p] [--fps F]\n"
+            "                            [--from S] [--to S] [--speed X] [--charts] [--ball B] [--quiet]\n"
+            "                            and the run options; exit status 4 when there is no OpenGL",
+            videoCommand},
 };
 
 void usage(std::ostream& out)
