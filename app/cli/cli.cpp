@@ -65,7 +65,8 @@ void usage(std::ostream& out)
            "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
            "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
            "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
-           "  valid) holds the states before it; 130 when interrupted.\n";
+           "  valid) holds the states before it; 4 when `video` finds no OpenGL to draw with (no file is written);\n"
+           "  130 when interrupted.\n";
 }
 
 } // namespace

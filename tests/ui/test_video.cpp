@@ -347,6 +347,29 @@ private slots:
         QVERIFY(folderIsEmpty(dir.path()));
     }
 
+    void withoutADisplayItSaysSoOrWritesTheWholeClip()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("headless.mp4");
+        QProcess cli;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        env.remove("QT_QPA_PLATFORM"); // the command's own choice
+        cli.setProcessEnvironment(env);
+        cli.start(AB_CLI_PATH, {"video", "two-balls", "--t-end", "1", "--size", "160x96", "--quiet", "--out", path});
+        QVERIFY(cli.waitForFinished(120000));
+        const QByteArray err = cli.readAllStandardError();
+        QCOMPARE(cli.exitStatus(), QProcess::NormalExit); // never a crash
+        if (cli.exitCode() == 4) {                        // Qt 6.4 with Mesa: no OpenGL context without a display
+            QCOMPARE(err.count('\n'), 1);
+            QVERIFY2(err.contains("no OpenGL"), err.constData());
+            QVERIFY(folderIsEmpty(dir.path()));
+        } else {
+            QCOMPARE(cli.exitCode(), 0);
+            QCOMPARE(decode(path, 0).frames, 30LL);
+        }
+    }
+
     void badInputIsRefusedWithOneLineAndNoFile_data()
     {
         QTest::addColumn<QStringList>("args");
