@@ -11,6 +11,7 @@
 #include "ui/charts/scene_layout.h"
 #include "ui/main_window.h"
 #include "ui/video/animation_actions.h"
+#include "ui/video/animation_dialog.h"
 #include "ui/video/animation_export.h"
 #include "ui/view/view_frame.h"
 
@@ -23,8 +24,13 @@ extern "C" {
 }
 
 #include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QProcess>
 #include <QProgressDialog>
+#include <QPushButton>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -278,6 +284,30 @@ private slots:
         const QImage strip0 = f0.copy(384, 0, 256, 360), strip6 = f6.copy(384, 0, 256, 360);
         QVERIFY2(colourCount(strip0) > 20, "no charts beside the view");
         QVERIFY(strip0 != strip6); // the time cursor moved
+    }
+
+    void theDialogCountsTheClipsFramesAndRefusesAnOddH264Size()
+    {
+        ab::ui::AnimationChoice initial;
+        initial.from = 0.0;
+        initial.to = 1000.0; // stage 4's 1000 frames at 60 a second: 16.7 s at 1x
+        ab::ui::AnimationDialog dialog(0.0, 1000.0, 60.0, "frame", initial);
+        QVERIFY2(dialog.summary().contains("500"), qPrintable(dialog.summary())); // at 30 fps
+        auto* ok = dialog.findChild<QDialogButtonBox*>()->buttons().constFirst();
+        for (QAbstractButton* b : dialog.findChild<QDialogButtonBox*>()->buttons())
+            if (b->text().startsWith("Export"))
+                ok = b;
+        QVERIFY(ok->isEnabled());
+        dialog.findChild<QComboBox*>("animationSize")->setCurrentIndex(2); // custom
+        dialog.findChild<QSpinBox*>("animationWidth")->setValue(641);
+        QVERIFY(!ok->isEnabled()); // H.264 needs even sides
+        QVERIFY2(dialog.summary().contains("641"), qPrintable(dialog.summary()));
+        dialog.findChild<QComboBox*>("animationFormat")->setCurrentIndex(2); // GIF takes odd sides
+        QVERIFY(ok->isEnabled());
+        QCOMPARE(dialog.choice().size, QSize(641, 720));
+        QCOMPARE(dialog.choice().format, VideoFormat::Gif);
+        dialog.findChild<QDoubleSpinBox*>("animationSpeed")->setValue(2.0);
+        QVERIFY2(dialog.summary().contains("250"), qPrintable(dialog.summary())); // twice as fast
     }
 
     void cancellingLeavesNoFile()

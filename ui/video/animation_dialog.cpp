@@ -51,44 +51,8 @@ AnimationDialog::AnimationDialog(double runStart, double runEnd, double rate, co
     speed_->setValue(initial.speed);
     speed_->setSuffix(tr("x"));
     speed_->setToolTip(tr("1x plays the run as the window does at 1x"));
-
-    size_ = new QComboBox;
-    size_->setObjectName("animationSize");
-    size_->addItem(tr("720p (1280 x 720)"), QSize(1280, 720));
-    size_->addItem(tr("1080p (1920 x 1080)"), QSize(1920, 1080));
-    size_->addItem(tr("Custom"), QSize());
-    width_ = new QSpinBox;
-    height_ = new QSpinBox;
-    width_->setObjectName("animationWidth");
-    height_->setObjectName("animationHeight");
-    for (QSpinBox* b : {width_, height_}) {
-        b->setRange(16, video::kMaxSide);
-        b->setSuffix(tr(" px"));
-    }
-    width_->setValue(initial.size.width());
-    height_->setValue(initial.size.height());
-    const int preset = initial.size == QSize(1280, 720) ? 0 : initial.size == QSize(1920, 1080) ? 1 : 2;
-    size_->setCurrentIndex(preset);
-    auto* custom = new QHBoxLayout;
-    custom->addWidget(size_);
-    custom->addWidget(width_);
-    custom->addWidget(new QLabel(QStringLiteral("x")));
-    custom->addWidget(height_);
-
-    fps_ = new QSpinBox;
-    fps_->setObjectName("animationFps");
-    fps_->setRange(24, 60);
-    fps_->setValue(std::clamp(initial.fps, 24, 60));
-    fps_->setSuffix(tr(" frames/s"));
-    format_ = new QComboBox;
-    format_->setObjectName("animationFormat");
-    format_->addItem(tr("MP4 (H.264): slides, players, phones"), int(video::VideoFormat::Mp4));
-    format_->addItem(tr("WebM (VP9): web pages"), int(video::VideoFormat::WebM));
-    format_->addItem(tr("GIF: anywhere, larger files, 256 colours"), int(video::VideoFormat::Gif));
-    format_->setCurrentIndex(format_->findData(int(initial.format)));
-    charts_ = new QCheckBox(tr("With the charts beside the 3D view"));
-    charts_->setObjectName("animationCharts");
-    charts_->setChecked(initial.charts);
+    QLayout* size = buildSizeRow(initial.size);
+    buildFormatFields(initial);
     summary_ = new QLabel;
     summary_->setObjectName("animationSummary");
     summary_->setWordWrap(true);
@@ -97,7 +61,7 @@ AnimationDialog::AnimationDialog(double runStart, double runEnd, double rate, co
     form->addRow(tr("From"), from_);
     form->addRow(tr("To"), to_);
     form->addRow(tr("Speed"), speed_);
-    form->addRow(tr("Size"), custom);
+    form->addRow(tr("Size"), size);
     form->addRow(tr("Frame rate"), fps_);
     form->addRow(tr("Format"), format_);
     form->addRow(QString(), charts_);
@@ -119,6 +83,51 @@ AnimationDialog::AnimationDialog(double runStart, double runEnd, double rate, co
         connect(b, &QComboBox::currentIndexChanged, this, &AnimationDialog::update);
     connect(charts_, &QCheckBox::toggled, this, &AnimationDialog::update);
     update();
+}
+
+QLayout* AnimationDialog::buildSizeRow(QSize initial)
+{
+    size_ = new QComboBox;
+    size_->setObjectName("animationSize");
+    size_->addItem(tr("720p (1280 x 720)"), QSize(1280, 720));
+    size_->addItem(tr("1080p (1920 x 1080)"), QSize(1920, 1080));
+    size_->addItem(tr("Custom"), QSize());
+    width_ = new QSpinBox;
+    height_ = new QSpinBox;
+    width_->setObjectName("animationWidth");
+    height_->setObjectName("animationHeight");
+    for (QSpinBox* b : {width_, height_}) {
+        b->setRange(16, video::kMaxSide);
+        b->setSuffix(tr(" px"));
+    }
+    width_->setValue(initial.width());
+    height_->setValue(initial.height());
+    const int preset = initial == QSize(1280, 720) ? 0 : initial == QSize(1920, 1080) ? 1 : 2;
+    size_->setCurrentIndex(preset);
+    auto* custom = new QHBoxLayout;
+    custom->addWidget(size_);
+    custom->addWidget(width_);
+    custom->addWidget(new QLabel(QStringLiteral("x")));
+    custom->addWidget(height_);
+    return custom;
+}
+
+void AnimationDialog::buildFormatFields(const AnimationChoice& initial)
+{
+    fps_ = new QSpinBox;
+    fps_->setObjectName("animationFps");
+    fps_->setRange(24, 60);
+    fps_->setValue(std::clamp(initial.fps, 24, 60));
+    fps_->setSuffix(tr(" frames/s"));
+    format_ = new QComboBox;
+    format_->setObjectName("animationFormat");
+    format_->addItem(tr("MP4 (H.264): slides, players, phones"), int(video::VideoFormat::Mp4));
+    format_->addItem(tr("WebM (VP9): web pages"), int(video::VideoFormat::WebM));
+    format_->addItem(tr("GIF: anywhere, larger files, 256 colours"), int(video::VideoFormat::Gif));
+    format_->setCurrentIndex(format_->findData(int(initial.format)));
+    charts_ = new QCheckBox(tr("With the charts beside the 3D view"));
+    charts_->setObjectName("animationCharts");
+    charts_->setChecked(initial.charts);
 }
 
 AnimationChoice AnimationDialog::choice() const

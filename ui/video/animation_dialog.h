@@ -14,6 +14,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLayout;
 class QPushButton;
 class QSpinBox;
 
@@ -40,6 +41,8 @@ public:
     QString summary() const;
 
 private:
+    QLayout* buildSizeRow(QSize initial);                   // the presets and the custom width and height
+    void buildFormatFields(const AnimationChoice& initial); // frame rate, format, charts
     void update();
 
     double rate_;

@@ -172,6 +172,42 @@ QImage AnimationFrames::frame(long long k)
     return out;
 }
 
+namespace {
+
+// Counts the work done and asks `progress` whether to go on.
+struct Work {
+    const AnimationProgress& progress;
+    long long total = 0, done = 0;
+
+    bool goOn() const { return !progress || progress(done, total); }
+    void step()
+    {
+        ++done;
+        if (!goOn())
+            throw AnimationCancelled();
+    }
+};
+
+// A GIF's palette from `samples` frames spread evenly over the clip, first to last.
+void samplePalette(const AnimationRequest& request, const AnimationPlan& plan, long long samples,
+                   video::VideoEncoder& encoder, Work& work, AnimationStats& stats)
+{
+    AnimationFrames sampler(request, plan, [&] { return !work.goOn(); });
+    QElapsedTimer timer;
+    for (long long i = 0; i < samples; ++i) {
+        const long long k = samples > 1 ? i * (plan.frames - 1) / (samples - 1) : 0;
+        const QImage f = sampler.frame(k);
+        timer.start();
+        encoder.addPaletteSample(f.constBits(), int(f.bytesPerLine()));
+        stats.encode += seconds(timer);
+        work.step();
+    }
+    stats.simulate += sampler.simulateSeconds();
+    stats.render += sampler.renderSeconds();
+}
+
+} // namespace
+
 AnimationStats exportAnimation(const AnimationRequest& request, const std::string& path,
                                const AnimationProgress& progress)
 {
@@ -182,43 +218,24 @@ AnimationStats exportAnimation(const AnimationRequest& request, const std::strin
     AnimationStats stats;
     const bool gif = request.video.format == video::VideoFormat::Gif;
     const long long samples = gif ? std::min<long long>(kPaletteSamples, plan.frames) : 0;
-    const long long work = samples + plan.frames;
-    long long done = 0;
-    const auto report = [&] {
-        if (progress && !progress(done, work))
-            throw AnimationCancelled();
-    };
-    const std::function<bool()> cancelled = [&] { return progress && !progress(done, work); };
+    Work work{progress, samples + plan.frames, 0};
     // Written through core/io/atomic_file.h: a temporary file beside `path`, renamed at the end.
     writeFileAtomically(path, [&](std::ostream& out) {
         video::VideoEncoder encoder(request.video, out);
+        if (samples > 0)
+            samplePalette(request, plan, samples, encoder, work, stats);
+        AnimationFrames frames(request, plan, [&] { return !work.goOn(); });
+        if (!work.goOn())
+            throw AnimationCancelled();
         QElapsedTimer timer;
-        if (samples > 0) {
-            // The palette from frames spread evenly over the clip, first to last.
-            AnimationFrames sampler(request, plan, cancelled);
-            for (long long i = 0; i < samples; ++i) {
-                const long long k = samples > 1 ? i * (plan.frames - 1) / (samples - 1) : 0;
-                const QImage f = sampler.frame(k);
-                timer.restart();
-                encoder.addPaletteSample(f.constBits(), int(f.bytesPerLine()));
-                stats.encode += seconds(timer);
-                ++done;
-                report();
-            }
-            stats.simulate += sampler.simulateSeconds();
-            stats.render += sampler.renderSeconds();
-        }
-        AnimationFrames frames(request, plan, cancelled);
-        report();
         for (long long k = 0; k < plan.frames; ++k) {
             const QImage f = frames.frame(k);
-            timer.restart();
+            timer.start();
             encoder.addFrame(f.constBits(), int(f.bytesPerLine()));
             stats.encode += seconds(timer);
-            ++done;
-            report();
+            work.step();
         }
-        timer.restart();
+        timer.start();
         encoder.finish();
         stats.encode += seconds(timer);
         stats.frames = encoder.framesWritten();

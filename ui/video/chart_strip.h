@@ -42,6 +42,10 @@ private:
         double top = 0, bottom = 0;
         QPen pen;
     };
+    static constexpr int kMinHeight = 220; // pixels a chart needs for the window's fonts
+    static Panel drawPanel(const Simulation& sim, int ball, ChartKind kind, const MotionTrack& track, double tEnd,
+                           QRect rect);
+
     std::vector<Panel> panels_;
 };
 
