@@ -11,6 +11,7 @@
 #include "panels/transport_bar.h"
 #include "presets/preset_actions.h"
 #include "tools/tools_menu.h"
+#include "video/animation_actions.h"
 #include "view/ball_view.h"
 
 #include <QComboBox>
@@ -192,6 +193,7 @@ void MainWindow::buildMenus()
                     [this] { exportInteractively(charts_->currentChart(), ExportFormat::Csv); });
     QAction* viewPng = file->addAction(tr("Export 3D view as PNG..."), this, [this] { exportViewInteractively(); });
     viewPng->setEnabled(view_ != nullptr);
+    (new AnimationActions(this))->addToFileMenu(file);
     file->addSeparator();
     file->addAction(tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
 

@@ -45,6 +45,12 @@ const std::array commands{
             "figure 2.5|2.6|2.7|3.1     the report's figure redrawn from the report model, headless:\n"
             "                            --out FILE.png|FILE.svg [--width W] [--height H]",
             figureCommand},
+    Command{"video",
+            "video SCENE [options]     the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL):\n"
+            "                            --out FILE.mp4|FILE.webm|FILE.gif [--size WxH|720p|1080p] [--fps F]\n"
+            "                            [--from S] [--to S] [--speed X] [--charts] [--ball B] [--quiet]\n"
+            "                            and the run options; exit status 4 when there is no OpenGL",
+            videoCommand},
 };
 
 void usage(std::ostream& out)
@@ -62,7 +68,8 @@ void usage(std::ostream& out)
            "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
            "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
            "  valid) holds the states before it; 4 when an output could not be written (disk full, standard\n"
-           "  output closed; a file written before is kept); 130 when interrupted (no file is left).\n";
+           "  output closed; a file written before is kept); 5 when `video` finds no OpenGL to draw with (no\n"
+           "  file is written); 130 when interrupted (no file is left).\n";
 }
 
 // Every message is one line: whatever a message quotes, no control character reaches the

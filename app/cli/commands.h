@@ -15,5 +15,6 @@ int studyCommand(Args& args, std::ostream& out, std::ostream& err);
 int chartCommand(Args& args, std::ostream& out, std::ostream& err);
 int benchCommand(Args& args, std::ostream& out, std::ostream& err);
 int figureCommand(Args& args, std::ostream& out, std::ostream& err);
+int videoCommand(Args& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

@@ -283,6 +283,143 @@
     </message>
 </context>
 <context>
+    <name>ab::ui::AnimationActions</name>
+    <message>
+        <source>Export animation...</source>
+        <translation>Exportera animering...</translation>
+    </message>
+    <message>
+        <source>Writing %1</source>
+        <translation>Skriver %1</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Exportera animering</translation>
+    </message>
+    <message>
+        <source>Wrote %1: %2 frames</source>
+        <translation>Skrev %1: %2 bildrutor</translation>
+    </message>
+    <message>
+        <source>Export cancelled; no file was written</source>
+        <translation>Exporten avbröts; ingen fil skrevs</translation>
+    </message>
+    <message>
+        <source>%1 video (*.%2)</source>
+        <translation>%1-video (*.%2)</translation>
+    </message>
+    <message>
+        <source>The animation was not written: %1</source>
+        <translation>Animeringen skrevs inte: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::AnimationDialog</name>
+    <message>
+        <source>Export animation</source>
+        <translation>Exportera animering</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>1x plays the run as the window does at 1x</source>
+        <translation>1x spelar körningen som fönstret gör vid 1x</translation>
+    </message>
+    <message>
+        <source>720p (1280 x 720)</source>
+        <translation>720p (1280 x 720)</translation>
+    </message>
+    <message>
+        <source>1080p (1920 x 1080)</source>
+        <translation>1080p (1920 x 1080)</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Egen</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source> frames/s</source>
+        <translation> bildrutor/s</translation>
+    </message>
+    <message>
+        <source>MP4 (H.264): slides, players, phones</source>
+        <translation>MP4 (H.264): presentationer, spelare, telefoner</translation>
+    </message>
+    <message>
+        <source>WebM (VP9): web pages</source>
+        <translation>WebM (VP9): webbsidor</translation>
+    </message>
+    <message>
+        <source>GIF: anywhere, larger files, 256 colours</source>
+        <translation>GIF: överallt, större filer, 256 färger</translation>
+    </message>
+    <message>
+        <source>With the charts beside the 3D view</source>
+        <translation>Med diagrammen bredvid 3D-vyn</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Från</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Till</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Hastighet</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Storlek</translation>
+    </message>
+    <message>
+        <source>Frame rate</source>
+        <translation>Bildfrekvens</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Exportera...</translation>
+    </message>
+    <message>
+        <source>H.264 needs an even width and height: %1 x %2 has an odd side</source>
+        <translation>H.264 kräver jämn bredd och höjd: %1 x %2 har en udda sida</translation>
+    </message>
+    <message>
+        <source>The charts need a clip 400 pixels wide or more</source>
+        <translation>Diagrammen kräver ett klipp som är minst 400 pixlar brett</translation>
+    </message>
+    <message>
+        <source>The clip is empty: To must come after From</source>
+        <translation>Klippet är tomt: Till måste komma efter Från</translation>
+    </message>
+    <message>
+        <source>%1 s of video, %2 frames</source>
+        <translation>%1 s video, %2 bildrutor</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::AnimationFrames</name>
+    <message>
+        <source>t = %1 %2</source>
+        <translation>t = %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>ab::ui::BallView</name>
     <message>
         <source>3D view</source>

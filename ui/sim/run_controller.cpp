@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "run_controller.h"
 
+#include "playback_rate.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -59,11 +61,7 @@ void RunController::retireEngine(std::unique_ptr<RunEngine>& engine)
 
 double RunController::realTimeRate(const SceneInfo& scene)
 {
-    if (scene.timeUnit == "step")
-        return 10.0;
-    if (scene.timeUnit == "frame")
-        return 60.0;
-    return 1.0;
+    return playbackRate(scene);
 }
 
 const RunSpec& RunController::spec() const

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "ball_view.h"
 
-#include "core/random.h"
+#include "view_frame.h"
 
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
-#include <QPainterPath>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -29,44 +28,7 @@ QSurfaceFormat viewFormat()
     return f;
 }
 
-void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align)
-{
-    const QFontMetricsF fm(p.font());
-    const QRectF box = fm.boundingRect(text);
-    QPointF origin = at;
-    if (align & Qt::AlignRight)
-        origin.rx() -= box.width();
-    else if (align & Qt::AlignHCenter)
-        origin.rx() -= box.width() / 2.0;
-    origin.ry() += fm.ascent() / 2.0 - 1.0; // vertically centred on `at`
-    QPainterPath path;
-    path.addText(origin, p.font(), text);
-    p.setPen(QPen(QColor(255, 255, 255, 220), 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
-    p.fillPath(path, colour);
-}
-
 } // namespace
-
-std::vector<unsigned> ballColours(const RunSpec& spec, int balls)
-{
-    std::vector<unsigned> colours(static_cast<std::size_t>(std::max(balls, 0)));
-    static constexpr unsigned fixed[] = {0xe4572e, 0x2e86de};
-    if (balls <= 2) {
-        for (int i = 0; i < balls; ++i)
-            colours[static_cast<std::size_t>(i)] = fixed[i];
-        return colours;
-    }
-    const long long seed = spec.params.indexOf("seed") ? spec.params.integer("seed") : 0;
-    SplitMix64 rng(static_cast<std::uint64_t>(seed) ^ 0xC0105EEDull);
-    for (unsigned& c : colours) {
-        const QColor q = QColor::fromHsvF(float(rng.uniform()), float(0.55 + 0.4 * rng.uniform()),
-                                          float(0.75 + 0.25 * rng.uniform()));
-        c = q.rgb() & 0xffffffu;
-    }
-    return colours;
-}
 
 BallView::BallView()
 {
@@ -153,13 +115,7 @@ void BallView::resetView()
 
 void BallView::frameScene()
 {
-    const float aspect = float(width()) / float(std::max(height(), 1));
-    // The report's WebGL camera stands at (100, 50, 50) from the centre: yaw about 63
-    // degrees, pitch about 24. The vertical scene is seen from the side.
-    if (layout_.walls)
-        camera_.frame(geometry_.lo, geometry_.hi, 63.0f, 24.0f, aspect);
-    else
-        camera_.frame(geometry_.lo, geometry_.hi, 0.0f, 8.0f, aspect);
+    frameSceneCamera(camera_, geometry_, layout_, float(width()) / float(std::max(height(), 1)));
     framePending_ = false;
 }
 
@@ -262,25 +218,7 @@ void BallView::uploadPending()
 
 RenderInputs BallView::renderInputs() const
 {
-    RenderInputs in;
-    const float aspect = float(width()) / float(std::max(height(), 1));
-    in.view = camera_.view();
-    in.projection = camera_.projection(aspect);
-    in.pixelsPerUnit = camera_.pixelsPerUnit(height());
-    in.radius = float(layout_.ballRadius);
-    in.minPixels = minimumBallPixels();
-    in.selected = layout_.balls > 1 ? selected_ : -1; // one ball needs no marking
-    in.floorY = float(layout_.floorY);
-    // A few balls get a cue that darkens as they come down; a crowd (thousands, piling up
-    // on the floor) only where a ball is within a diameter of it: the cues of the layers
-    // above would lie under the bottom layer's balls, and under software OpenGL drawing
-    // them costs an eighth of the frame at 10,000 balls.
-    constexpr int crowd = 2'000;
-    in.fadeHeight = layout_.balls > crowd
-                        ? float(2.0 * layout_.ballRadius)
-                        : float(std::max(6.0 * layout_.ballRadius, 0.08 * layout_.region.sizes().y()));
-    in.background = background_;
-    return in;
+    return sceneRenderInputs(camera_, layout_, size(), selected_, background_, scale_);
 }
 
 void BallView::paintGL()
@@ -305,19 +243,9 @@ void BallView::paintGL()
 
 void BallView::paintOverlay(QPainter& p)
 {
-    p.setRenderHint(QPainter::Antialiasing);
     QFont font = p.font();
     font.setPointSizeF(10.0 * scale_);
-    p.setFont(font);
-    QPointF at;
-    for (const SceneLabel& label : geometry_.labels)
-        if (camera_.project(label.at, size(), at))
-            drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
-    // The vertical scene reads its height off the scale: label the ball with it.
-    if (!layout_.walls && balls_.size() >= 3 && ballPixel(0, at))
-        drawHaloText(p, at + QPointF(14.0 * scale_ + minimumBallPixels(), 0.0),
-                     QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
-                     Qt::AlignLeft);
+    paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font);
     if (!ghostLegend_.isEmpty())
         drawHaloText(p, QPointF(12, 20 * scale_), ghostLegend_, QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
     if (!glError_.isEmpty())
@@ -338,10 +266,7 @@ void BallView::setPresentationScale(double scale)
 
 float BallView::minimumBallPixels() const
 {
-    // A crowd keeps small dots (they would cover each other); up to a dozen balls are at
-    // least 1/90 of the view's height in radius (12 px of 1080), all larger in lecture mode.
-    const double pixels = layout_.balls > 100 ? 2.0 : layout_.balls > 12 ? 5.0 : std::max(5.0, height() / 90.0);
-    return float(pixels * scale_);
+    return smallestBallPixels(layout_, height(), scale_);
 }
 
 QVector3D BallView::ballAt(int i) const

@@ -14,6 +14,7 @@
 #include "orbit_camera.h"
 #include "scene_geometry.h"
 #include "scene_renderer.h"
+#include "view_frame.h" // ballColours
 
 #include <QElapsedTimer>
 #include <QOpenGLWindow>
@@ -128,9 +129,5 @@ private:
     bool cameraMoved_ = false;
     double scale_ = 1.0;
 };
-
-// Colour of each ball as 0xRRGGBB: fixed, distinct colours for one or two balls; for
-// many, random bright hues drawn from the scene's seed (the report gives random colours).
-std::vector<unsigned> ballColours(const RunSpec& spec, int balls);
 
 } // namespace ab::ui

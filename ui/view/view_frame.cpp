@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "view_frame.h"
+
+#include "core/random.h"
+
+#include <QPainterPath>
+
+#include <algorithm>
+
+namespace ab::ui {
+
+std::vector<unsigned> ballColours(const RunSpec& spec, int balls)
+{
+    std::vector<unsigned> colours(static_cast<std::size_t>(std::max(balls, 0)));
+    static constexpr unsigned fixed[] = {0xe4572e, 0x2e86de};
+    if (balls <= 2) {
+        for (int i = 0; i < balls; ++i)
+            colours[static_cast<std::size_t>(i)] = fixed[i];
+        return colours;
+    }
+    const long long seed = spec.params.indexOf("seed") ? spec.params.integer("seed") : 0;
+    SplitMix64 rng(static_cast<std::uint64_t>(seed) ^ 0xC0105EEDull);
+    for (unsigned& c : colours) {
+        const QColor q = QColor::fromHsvF(float(rng.uniform()), float(0.55 + 0.4 * rng.uniform()),
+                                          float(0.75 + 0.25 * rng.uniform()));
+        c = q.rgb() & 0xffffffu;
+    }
+    return colours;
+}
+
+void frameSceneCamera(OrbitCamera& camera, const SceneGeometry& geometry, const SceneLayout& layout, float aspect)
+{
+    // The report's WebGL camera stands at (100, 50, 50) from the centre: yaw about 63
+    // degrees, pitch about 24. The vertical scene is seen from the side.
+    if (layout.walls)
+        camera.frame(geometry.lo, geometry.hi, 63.0f, 24.0f, aspect);
+    else
+        camera.frame(geometry.lo, geometry.hi, 0.0f, 8.0f, aspect);
+}
+
+float smallestBallPixels(const SceneLayout& layout, int viewHeight, double scale)
+{
+    // A crowd keeps small dots (they would cover each other); up to a dozen balls are at
+    // least 1/90 of the view's height in radius (12 px of 1080), all larger in lecture mode.
+    const double pixels = layout.balls > 100 ? 2.0 : layout.balls > 12 ? 5.0 : std::max(5.0, viewHeight / 90.0);
+    return float(pixels * scale);
+}
+
+RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& layout, QSize size, int selected,
+                               const QColor& background, double scale)
+{
+    RenderInputs in;
+    const float aspect = float(size.width()) / float(std::max(size.height(), 1));
+    in.viewport = size;
+    in.view = camera.view();
+    in.projection = camera.projection(aspect);
+    in.pixelsPerUnit = camera.pixelsPerUnit(size.height());
+    in.radius = float(layout.ballRadius);
+    in.minPixels = smallestBallPixels(layout, size.height(), scale);
+    in.selected = layout.balls > 1 ? selected : -1; // one ball needs no marking
+    in.floorY = float(layout.floorY);
+    // A few balls get a cue that darkens as they come down; a crowd (thousands, piling up
+    // on the floor) only where a ball is within a diameter of it: the cues of the layers
+    // above would lie under the bottom layer's balls, and under software OpenGL drawing
+    // them costs an eighth of the frame at 10,000 balls.
+    constexpr int crowd = 2'000;
+    in.fadeHeight = layout.balls > crowd ? float(2.0 * layout.ballRadius)
+                                         : float(std::max(6.0 * layout.ballRadius, 0.08 * layout.region.sizes().y()));
+    in.background = background;
+    return in;
+}
+
+void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align)
+{
+    const QFontMetricsF fm(p.font());
+    const QRectF box = fm.boundingRect(text);
+    QPointF origin = at;
+    if (align & Qt::AlignRight)
+        origin.rx() -= box.width();
+    else if (align & Qt::AlignHCenter)
+        origin.rx() -= box.width() / 2.0;
+    origin.ry() += fm.ascent() / 2.0 - 1.0; // vertically centred on `at`
+    QPainterPath path;
+    path.addText(origin, p.font(), text);
+    const double halo = std::max(3.0, fm.height() / 6.0);
+    p.setPen(QPen(QColor(255, 255, 255, 220), halo, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+    p.fillPath(path, colour);
+}
+
+void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
+                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font)
+{
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setFont(font);
+    QPointF at;
+    for (const SceneLabel& label : geometry.labels)
+        if (camera.project(label.at, size, at))
+            drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
+    // The vertical scene reads its height off the scale: label the ball with it.
+    if (!layout.walls && balls.size() >= 3 && camera.project(QVector3D(balls[0], balls[1], balls[2]), size, at))
+        drawHaloText(p, at + QPointF(0.9 * QFontMetricsF(font).height(), 0.0),
+                     QStringLiteral("y = %1").arg(double(balls[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
+                     Qt::AlignLeft);
+}
+
+} // namespace ab::ui

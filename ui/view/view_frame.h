@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// What the window's 3D view and the animation export (ui/video/) both draw from, so a
+// clip looks as the view does: the camera's framing of a scene, the renderer's inputs for
+// a viewport, and the labels painted over the GL image (axis names, the height scale's
+// numbers, the falling ball's height).
+#pragma once
+
+#include "orbit_camera.h"
+#include "scene_geometry.h"
+#include "scene_renderer.h"
+
+#include "core/simulation.h"
+
+#include <QFont>
+#include <QPainter>
+
+#include <vector>
+
+namespace ab::ui {
+
+// Colour of each ball as 0xRRGGBB: fixed, distinct colours for one or two balls; for
+// many, random bright hues drawn from the scene's seed (the report gives random colours).
+std::vector<unsigned> ballColours(const RunSpec& spec, int balls);
+
+// Frames the whole scene for a view of aspect `aspect` (width / height), seen from where
+// the report's WebGL camera stands (the vertical scene from the side).
+void frameSceneCamera(OrbitCamera& camera, const SceneGeometry& geometry, const SceneLayout& layout, float aspect);
+
+// The smallest radius a ball is drawn with on a view `viewHeight` pixels high, times
+// `scale` (lecture mode's presentation scale).
+float smallestBallPixels(const SceneLayout& layout, int viewHeight, double scale);
+
+// The renderer's inputs for a view `size` logical pixels large (viewport: the caller's
+// device pixels), `selected` ringed when the scene has more than one ball; balls and
+// marks `scale` times larger (lecture mode).
+RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& layout, QSize size, int selected,
+                               const QColor& background, double scale = 1.0);
+
+// Text in `colour` with a white halo, readable over any part of the scene.
+void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align);
+
+// The geometry's labels and, in the vertical scene, the ball's height beside it, in `font`.
+void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
+                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font);
+
+} // namespace ab::ui
