@@ -13,6 +13,12 @@
 
 namespace ab {
 
+namespace {
+
+constexpr const char* spinColumns = ",wx,wy,wz";
+
+} // namespace
+
 void writeTrajectoryHeader(std::ostream& out, bool spin)
 {
     out << "t,ball,x,y,z,vx,vy,vz" << (spin ? spinColumns : "") << "\n";
@@ -49,7 +55,6 @@ void writeTrajectoryRows(std::ostream& out, const State& s, bool spin)
 
 namespace {
 
-constexpr const char* spinColumns = ",wx,wy,wz";
 constexpr std::size_t kMaxLine = 1024;       // a row of %.17g numbers is under 200 characters
 constexpr std::size_t kMaxBalls = 4'000'000; // many-balls' largest n
 
