@@ -128,6 +128,7 @@ struct HealthCheck::Impl {
     std::optional<physical::SpringFloor> spring;
     double springAllowance = infinity;
     std::vector<double> mass; // the physical model's masses (its World); empty: equal masses
+    double spinInertia = 0.0; // q r^2 of I = q m r^2 (docs/spin.md); 0: the balls do not turn
     double e0 = 0.0;
     double energyScale = 0.0;
     HealthFigures fig;
@@ -158,8 +159,10 @@ struct HealthCheck::Impl {
             spring = physical::springFloorFor(spec);
         }
         // The spring floor's energies stay per unit mass: its allowance below takes them so.
-        if (const physical::World* world = physical::worldOf(s); world && !spring)
+        if (const physical::World* world = physical::worldOf(s); world && !spring) {
             mass = world->mass;
+            spinInertia = world->inertia * world->spinRadius * world->spinRadius;
+        }
         e0 = energy(start);
         // Gains are relative to the start energy, or to that of the balls raised by the
         // scene's size when the start holds less (a ball at rest on the floor).
@@ -174,15 +177,19 @@ struct HealthCheck::Impl {
 
     double potential(double y) const { return spring ? spring->potential(y) : g * (y - walls.lo.y()); }
 
-    // sum m (|v|^2 / 2 + potential): with the physical model's masses where it has them
-    // (two balls of different masses share the energy, not the energy per unit mass), else
-    // per unit mass (the report's and many-balls' equal masses, the spring floor's one ball).
+    // sum m (|v|^2 / 2 + q r^2 |w|^2 / 2 + potential): with the physical model's masses where
+    // it has them (two balls of different masses share the energy, not the energy per unit
+    // mass), else per unit mass (the report's and many-balls' equal masses, the spring
+    // floor's one ball). A turning ball's rotational energy I |w|^2 / 2 = m q r^2 |w|^2 / 2
+    // (docs/spin.md) counts: friction trades it with the translation's.
     double energy(const State& s) const
     {
+        const bool turning = spinInertia > 0.0 && s.w.cols() == s.size();
         double e = 0.0;
         for (int i = 0; i < s.size(); ++i) {
             const double m = static_cast<std::size_t>(i) < mass.size() ? mass[static_cast<std::size_t>(i)] : 1.0;
-            e += m * (0.5 * s.v.col(i).squaredNorm() + potential(s.p(1, i)));
+            const double spin = turning ? 0.5 * spinInertia * s.w.col(i).squaredNorm() : 0.0;
+            e += m * (0.5 * s.v.col(i).squaredNorm() + spin + potential(s.p(1, i)));
         }
         return e;
     }
