@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libeigen3-dev libgl-dev
-  xvfb xauth libgl1-mesa-dri fontconfig fonts-dejavu-core)
+  xvfb xauth libgl1-mesa-dri fontconfig fonts-dejavu-core poppler-utils)
 read -r -a extra <<< "${AMAZEBALLS_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")
 build_dir=${AMAZEBALLS_BUILD_DIR:-build}

@@ -317,8 +317,8 @@ void BallView::paintOverlay(QPainter& p)
     if (!layout_.walls && balls_.size() >= 3 && ballPixel(0, at))
         drawHaloText(p, at + QPointF(14.0, 0.0), QStringLiteral("y = %1").arg(double(balls_[1]), 0, 'f', 1),
                      QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
-    if (!ghostLegend_.isEmpty())
-        drawHaloText(p, QPointF(12, 20), ghostLegend_, QColor(0x20, 0x20, 0x20), Qt::AlignLeft);
+    if (!ghostLegend_.isEmpty()) // top right, in the ghosts' violet: clear of the axis labels on the left
+        drawHaloText(p, QPointF(width() - 12, 20), ghostLegend_, QColor(0x4b, 0x00, 0x82), Qt::AlignRight);
     if (!glError_.isEmpty())
         drawHaloText(p, QPointF(12, 40), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
     if (keyFocus_)
