@@ -8,6 +8,7 @@
 #include "charts/chart_recipe.h"
 #include "charts/run_description.h"
 #include "export_files.h"
+#include "panels/transport_bar.h"
 #include "tools/background_job.h"
 #include "view/ball_view.h"
 

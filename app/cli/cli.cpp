@@ -39,8 +39,9 @@ const std::array commands{
             "                            [--caption] [--compare MODEL[:INTEGRATOR[:IMPACTS]]] [--data FILE.csv]\n"
             "                            [--width W] [--height H] and the run options",
             chartCommand},
-    Command{"stability", "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
-                         "                            the stiff and extreme cases, one row per model and integrator",
+    Command{"stability",
+            "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
+            "                            the stiff and extreme cases, one row per model and integrator",
             stabilityCommand},
     Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
             studyCommand},

@@ -69,7 +69,8 @@ ui::FigureOptions readFigureOptions(Args& args)
         options.size = ui::parseFigureSize(*size, "--size");
     else if (width || height)
         options.size = ui::pixelFigureSize(int(width.value_or(1200)), int(height.value_or(800)));
-    if (const auto dpi = args.integer("dpi", std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max())) {
+    if (const auto dpi =
+            args.integer("dpi", std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max())) {
         ui::checkDpi(*dpi);
         options.dpi = int(*dpi);
     }
@@ -139,7 +140,8 @@ void checkApplies(ui::ChartKind kind, SceneId scene)
         return;
     const std::string key = sceneInfo(scene).key;
     throw InputError("--chart: the " + std::string(ui::chartKey(kind)) + " chart is for " +
-                     (kind == ui::ChartKind::Momentum ? "two-balls and many-balls" : "many-balls") + " only, not " + key);
+                     (kind == ui::ChartKind::Momentum ? "two-balls and many-balls" : "many-balls") + " only, not " +
+                     key);
 }
 
 } // namespace
@@ -203,8 +205,8 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
     if (other) {
         // As many steps as reach the main run's end (as the window's comparison).
         const double ratio = sim->dt() / other->dt();
-        const auto steps = static_cast<long long>(
-            std::ceil(static_cast<double>(setup.steps) * ratio - 1e-9 * std::max(ratio, 1.0)));
+        const auto steps =
+            static_cast<long long>(std::ceil(static_cast<double>(setup.steps) * ratio - 1e-9 * std::max(ratio, 1.0)));
         compareTrack = simulate(*other, steps, ball, err);
     }
     const ConservationMeter meter(*sim);

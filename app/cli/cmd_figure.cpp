@@ -60,7 +60,8 @@ int figureCommand(Args& args, std::ostream&, std::ostream&)
     if (options)
         ui::exportFigure(data, QString::fromStdString(*path), *options);
     else
-        ui::exportFigure(data, QString::fromStdString(*path), QSize(int(width.value_or(1200)), int(height.value_or(900))));
+        ui::exportFigure(data, QString::fromStdString(*path),
+                         QSize(int(width.value_or(1200)), int(height.value_or(900))));
     return 0;
 }
 

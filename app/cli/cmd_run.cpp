@@ -5,10 +5,10 @@
 #include "interrupt.h"
 #include "run_setup.h"
 
-#include "../../ui/charts/run_description.h"
 #include "../../core/diagnostics/health.h"
 #include "../../core/io/atomic_file.h"
 #include "../../core/io/trajectory_csv.h"
+#include "../../ui/charts/run_description.h"
 
 #include <ostream>
 
@@ -83,7 +83,8 @@ int reportHealth(const diagnostics::HealthCheck& health, bool diverged, const St
         return 0;
     err << "amazeballs-cli: run: " << diagnostics::healthKey(worst.level) << ": " << worst.line();
     if (diverged)
-        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " " << sim.scene().timeUnit;
+        err << "; the run stopped there, the output ends at t = " << formatNumber(last.t) << " "
+            << sim.scene().timeUnit;
     err << "\n";
     return diverged ? 3 : 0;
 }
@@ -111,8 +112,8 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err)
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
         if (csv && meta) // `#` lines before the contract's header, only when asked for
-            for (const std::string& line :
-                 ui::RunDescription::comments({&sim->spec(), sim->dt()}, nullptr, false, -1, start.size(), "trajectory"))
+            for (const std::string& line : ui::RunDescription::comments({&sim->spec(), sim->dt()}, nullptr, false, -1,
+                                                                        start.size(), "trajectory"))
                 *csv << "# " << line << "\n";
         if (csv)
             writeTrajectoryHeader(*csv);

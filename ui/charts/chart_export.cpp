@@ -148,8 +148,7 @@ void checkFigurePath(const QString& path, const std::string& what)
                          printableInput(suffix.toStdString()) + "' (use .png, .svg or .pdf)");
 }
 
-void writeFigureFile(const QString& path, const FigureOptions& options, const QString& title,
-                     const ScenePainter& paint)
+void writeFigureFile(const QString& path, const FigureOptions& options, const QString& title, const ScenePainter& paint)
 {
     checkFigurePath(path);
     const QString suffix = QFileInfo(path).suffix().toLower();

@@ -53,7 +53,8 @@ double ChartLegend::layout(double width)
         std::size_t j = i;
         double right = 0.0;
         for (; j < placed_.size() && placed_[j].at.y() == placed_[i].at.y(); ++j)
-            right = placed_[j].at.x() + sampleOf(placed_[j].entry) + fm.horizontalAdvance(entries_[placed_[j].entry].text);
+            right =
+                placed_[j].at.x() + sampleOf(placed_[j].entry) + fm.horizontalAdvance(entries_[placed_[j].entry].text);
         const double shift = std::max(0.0, (width_ - right) / 2.0);
         for (std::size_t k = i; k < j; ++k)
             placed_[k].at.rx() += shift;

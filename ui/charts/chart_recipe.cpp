@@ -19,20 +19,24 @@ std::unique_ptr<MotionChart> buildFigureChart(const ChartRecipe& recipe, const F
         throw std::logic_error("a chart recipe without a scene or a run");
     const int columns = std::max(200, int(std::lround(options.sceneSize().width())));
     auto chart = std::make_unique<MotionChart>(recipe.kind, figureLook(options));
-    // Laid out at its size first: the ticks follow the plot's size.
     chart->resize(options.sceneSize());
-    if (chart->layout())
-        chart->layout()->activate();
+    chart->setCaption(recipe.caption);
     chart->setComparison(recipe.comparison ? recipe.runName : QString(),
                          recipe.comparison ? recipe.comparisonName : QString());
     chart->configure(*recipe.scene, recipe.ball, recipe.units);
     chart->setTimeSpan(recipe.tEnd);
     chart->setReference(recipe.closedForm ? &*recipe.closedForm : nullptr, columns);
+    // Laid out at its size with its legend and caption before the lines are drawn: the
+    // ticks follow the plot's size.
+    if (chart->layout()) {
+        chart->layout()->invalidate();
+        chart->layout()->activate();
+    }
+    chart->setReference(recipe.closedForm ? &*recipe.closedForm : nullptr, columns);
     chart->showTrack(*recipe.run, columns);
     if (recipe.comparison)
         chart->showComparisonTrack(*recipe.comparison, columns);
     chart->setCursorTime(recipe.cursor);
-    chart->setCaption(recipe.caption);
     return chart;
 }
 

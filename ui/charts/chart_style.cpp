@@ -123,7 +123,8 @@ QColor familyInk(LineFamily family)
 
 QPen cursorPen(const ChartLook& look)
 {
-    return QPen(QColor(90, 90, 90), look.px(0.9 * look.linePt / 1.5 * 1.2));
+    // A bluish grey of its own (no other line or text is drawn in it), 0.72 of a run line.
+    return QPen(QColor(0x60, 0x60, 0x66), look.px(0.72 * look.linePt));
 }
 
 } // namespace ab::ui

@@ -15,9 +15,9 @@ namespace ab::ui {
 enum class ChartKind;
 
 struct ChartLook {
-    bool figure = false;         // false: the window (fonts by point size, the screen's dpi)
+    bool figure = false;          // false: the window (fonts by point size, the screen's dpi)
     double pxPerPt = 96.0 / 72.0; // scene units per typographic point
-    double textPt = 9.5;         // axis labels, axis titles, legend
+    double textPt = 9.5;          // axis labels, axis titles, legend
     double titlePt = 11.0;
     double captionPt = 9.0;
     double linePt = 1.5; // the run's lines; the others are drawn relative to it

@@ -17,8 +17,8 @@
 namespace ab::ui {
 
 struct FigureSize {
-    std::string name;          // "report-column", "report-full", "slide", or the text given
-    double widthMm = 0.0;      // the physical size
+    std::string name;     // "report-column", "report-full", "slide", or the text given
+    double widthMm = 0.0; // the physical size
     double heightMm = 0.0;
     std::optional<QSize> pixels; // set for pixel sizes: the PNG's size, whatever the dpi
     bool slide = false;          // lecture-sized text

@@ -395,6 +395,7 @@ void MotionChart::setCursorTime(std::optional<double> t)
 
 void MotionChart::placeCursor()
 {
+    cursor_->setVisible(cursorT_.has_value()); // not even an empty element without one
     if (!cursorT_) {
         cursor_->clear();
         return;

@@ -73,7 +73,7 @@ void MotionChart::updateLegend()
         const QString run = mainName_.isEmpty() ? tr("simulation") : mainName_;
         const QString other = !compareName_.isEmpty() ? compareName_ : reference_ ? reference_->name : QString();
         entries.push_back({QPen(Qt::NoPen), other.isEmpty() ? tr("(no comparison or closed form to subtract)")
-                                                             : tr("= %1 minus %2").arg(run, other)});
+                                                            : tr("= %1 minus %2").arg(run, other)});
     }
     legend_->setEntries(std::move(entries));
     placeLegend();

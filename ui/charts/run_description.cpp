@@ -72,8 +72,9 @@ QString RunDescription::caption(const RunFacts& run, const RunFacts* comparison,
     if (spec.init)
         parts << tr("started from a given state");
     if (comparison)
-        parts << tr("dotted: %1").arg(qs(variantLabel(RunVariant{comparison->spec->model, comparison->spec->integrator,
-                                                                  comparison->spec->impacts, comparison->dt})));
+        parts << tr("dotted: %1")
+                     .arg(qs(variantLabel(RunVariant{comparison->spec->model, comparison->spec->integrator,
+                                                     comparison->spec->impacts, comparison->dt})));
     if (closedForm)
         parts << tr("dashed: closed form");
     return parts.join("; ");

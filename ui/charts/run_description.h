@@ -31,8 +31,8 @@ public:
     // The CSV's comment lines, without the leading "# ", in English (a data file's): `what`
     // the file holds ("chart data", "trajectory"); ball is 0-based (written 1-based), and
     // negative for a file of every ball.
-    static std::vector<std::string> comments(const RunFacts& run, const RunFacts* comparison, bool closedForm,
-                                             int ball, int balls, const std::string& what = "chart data");
+    static std::vector<std::string> comments(const RunFacts& run, const RunFacts* comparison, bool closedForm, int ball,
+                                             int balls, const std::string& what = "chart data");
 };
 
 } // namespace ab::ui
