@@ -261,16 +261,16 @@ private slots:
         while (lines.front().startsWith('#')) // the settings
             lines.removeFirst();
         const QStringList header = lines.front().split(',');
-        QVERIFY(header.contains("compare_t [s]"));
-        const int y = int(header.indexOf("compare_y [m]"));
+        QVERIFY(header.contains("compare_t [step]"));
+        const int y = int(header.indexOf("compare_y [unit]"));
         QVERIFY(y > 0);
-        QVERIFY(header.contains("compare_energy_total [m^2/s^2]"));
+        QVERIFY(header.contains("compare_energy_total [unit^2/step^2]"));
         QCOMPARE(lines.size(), 31); // the header and 30 recorded states
         const ab::ui::MotionTrack other = trackOf(*w.controller().comparisonEngine());
         for (int i = 1; i < lines.size(); ++i) {
             const QStringList cells = lines[i].split(',');
             QCOMPARE(cells.size(), header.size());
-            QCOMPARE(cells[header.indexOf("compare_t [s]")].toDouble(), cells[0].toDouble()); // the same moment
+            QCOMPARE(cells[header.indexOf("compare_t [step]")].toDouble(), cells[0].toDouble()); // the same moment
             QCOMPARE(cells[y].toDouble(), other.p(1)[std::size_t(i - 1)]);                    // shortest round trip
         }
         const QString svg = dir.filePath("e.svg");
