@@ -22,7 +22,8 @@ enum Preset { Column, Full, Slide, Custom };
 
 } // namespace
 
-ExportOptionsDialog::ExportOptionsDialog(const ChartExportChoice& initial, bool png, QWidget* parent)
+ExportOptionsDialog::ExportOptionsDialog(const ChartExportChoice& initial, bool png, QWidget* parent,
+                                         bool chartContents)
     : QDialog(parent), png_(png)
 {
     setWindowTitle(tr("Figure size and contents"));
@@ -84,8 +85,10 @@ ExportOptionsDialog::ExportOptionsDialog(const ChartExportChoice& initial, bool 
     width_->setValue(s.pixels ? s.pixels->width() : s.widthMm);
     height_->setValue(s.pixels ? s.pixels->height() : s.heightMm);
     dpi_->setValue(initial.options.effectiveDpi());
-    caption_->setChecked(initial.caption);
-    cursor_->setChecked(initial.cursor);
+    caption_->setChecked(initial.caption && chartContents);
+    cursor_->setChecked(initial.cursor && chartContents);
+    caption_->setVisible(chartContents);
+    cursor_->setVisible(chartContents);
     auto presetChosen = [this] {
         const int p = preset_->currentIndex();
         const bool custom = p == Custom;

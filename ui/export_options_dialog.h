@@ -25,8 +25,10 @@ struct ChartExportChoice {
 class ExportOptionsDialog : public QDialog {
     Q_OBJECT
 public:
-    // `png`: the dpi applies (SVG and PDF are vector, at their physical size).
-    ExportOptionsDialog(const ChartExportChoice& initial, bool png, QWidget* parent = nullptr);
+    // `png`: the dpi applies (SVG and PDF are vector, at their physical size). Without
+    // `chartContents` (the report's figures) the caption and cursor are not offered.
+    ExportOptionsDialog(const ChartExportChoice& initial, bool png, QWidget* parent = nullptr,
+                        bool chartContents = true);
     // Throws InputError when the custom size or the dpi is refused.
     ChartExportChoice choice() const;
 

@@ -336,6 +336,14 @@
         <source>Export failed</source>
         <translation>Exporten misslyckades</translation>
     </message>
+    <message>
+        <source>Export PDF...</source>
+        <translation>Exportera PDF...</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-dokument (*.pdf)</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::MainWindow</name>
