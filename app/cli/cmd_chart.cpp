@@ -134,6 +134,56 @@ ui::MotionTrack simulate(Simulation& sim, long long steps, int ball, std::ostrea
     return track;
 }
 
+// The comparison run of `variant`, checked to start with the main run's balls.
+std::unique_ptr<Simulation> comparisonOf(const RunSpec& spec, const State& start, const RunVariant& variant)
+{
+    std::unique_ptr<Simulation> other;
+    try {
+        other = makeSimulation(variantOf(spec, variant));
+    } catch (const InputError& e) {
+        throw InputError("--compare: " + std::string(e.what()));
+    }
+    if (other->start().t != start.t || other->start().size() != start.size())
+        throw InputError("--compare: the two runs do not start at the same time with the same balls");
+    return other;
+}
+
+// Steps of `other` that reach the main run's `steps`: steps dt / dt_c, rounded up (the
+// allowance keeps 2000 * 1 / 1 from becoming 2001).
+long long stepsToReach(const Simulation& sim, const Simulation& other, long long steps)
+{
+    const double ratio = sim.dt() / other.dt();
+    return static_cast<long long>(std::ceil(static_cast<double>(steps) * ratio - 1e-9 * std::max(ratio, 1.0)));
+}
+
+// The closed form the window draws: none for a run from a given state, or for a ball or
+// constants it does not cover.
+std::unique_ptr<reference::Reference> closedFormOf(const RunSpec& spec, double tEnd, int ball)
+{
+    std::unique_ptr<reference::Reference> ref;
+    if (spec.init)
+        return ref;
+    try {
+        ref = reference::makeReference(spec, tEnd);
+    } catch (const InputError&) {
+    }
+    if (ref && ball >= ref->balls())
+        ref.reset();
+    return ref;
+}
+
+ui::ReferenceMotion motionOf(const reference::Reference& r, int ball)
+{
+    const reference::Reference* ref = &r;
+    return ui::ReferenceMotion{ui::RunDescription::tr("closed form"),
+                               [ref, ball](double t) -> std::optional<ui::Kinematics> {
+                                   ui::Kinematics k{ref->position(ball, t), ref->velocity(ball, t)};
+                                   if (!k.p.allFinite() || !k.v.allFinite())
+                                       return std::nullopt; // never drawn
+                                   return k;
+                               }};
+}
+
 void checkApplies(ui::ChartKind kind, SceneId scene)
 {
     if (ui::chartApplies(kind, scene))
@@ -144,56 +194,62 @@ void checkApplies(ui::ChartKind kind, SceneId scene)
                      key);
 }
 
+struct ChartRequest {
+    explicit ChartRequest(RunSetup s) : setup(std::move(s)) {}
+    RunSetup setup;
+    ui::ChartKind kind = ui::ChartKind::Position;
+    std::string path;
+    long long ballNumber = 1;
+    ui::FigureOptions options;
+    bool caption = false;
+    std::optional<RunVariant> variant;
+    std::optional<std::string> dataPath;
+};
+
+// Every option, checked before anything runs (an output that cannot be written, a size
+// too large for a PNG, a chart the scene does not have).
+ChartRequest readRequest(Args& args)
+{
+    ChartRequest r(readRunSetup(args));
+    r.kind = readChartKind(args);
+    r.path = readImagePath(args);
+    r.ballNumber = args.integer("ball", 1, 4'000'000).value_or(1);
+    r.options = readFigureOptions(args);
+    r.caption = args.flag("caption");
+    r.variant = readComparison(args);
+    r.dataPath = args.option("data");
+    args.finish();
+    if (QFileInfo(QString::fromStdString(r.path)).suffix().toLower() == "png")
+        (void)r.options.pngPixels(); // a size too large for a PNG: refused before the run
+    if (r.dataPath) {
+        if (QFileInfo(QString::fromStdString(*r.dataPath)).suffix().toLower() != "csv")
+            throw InputError("--data: " + printableInput(*r.dataPath) + " must end in .csv");
+        checkWritable(*r.dataPath);
+    }
+    checkApplies(r.kind, r.setup.spec.scene);
+    return r;
+}
+
 } // namespace
 
 int chartCommand(Args& args, std::ostream&, std::ostream& err)
 {
-    const RunSetup setup = readRunSetup(args);
-    const ui::ChartKind kind = readChartKind(args);
-    const std::string path = readImagePath(args);
-    const long long ballNumber = args.integer("ball", 1, 4'000'000).value_or(1);
-    const ui::FigureOptions options = readFigureOptions(args);
-    const bool caption = args.flag("caption");
-    const std::optional<RunVariant> variant = readComparison(args);
-    const auto dataPath = args.option("data");
-    args.finish();
-    if (QFileInfo(QString::fromStdString(path)).suffix().toLower() == "png")
-        (void)options.pngPixels(); // a size too large for a PNG: refused before the run
-    if (dataPath) {
-        if (QFileInfo(QString::fromStdString(*dataPath)).suffix().toLower() != "csv")
-            throw InputError("--data: " + printableInput(*dataPath) + " must end in .csv");
-        checkWritable(*dataPath);
-    }
-    checkApplies(kind, setup.spec.scene);
-
+    const ChartRequest request = readRequest(args);
+    const RunSetup& setup = request.setup;
+    const ui::ChartKind kind = request.kind;
+    const long long ballNumber = request.ballNumber;
+    const std::optional<RunVariant>& variant = request.variant;
+    const std::optional<std::string>& dataPath = request.dataPath;
+    const ui::FigureOptions& options = request.options;
     const auto sim = makeSimulation(setup.spec);
     const State start = sim->start();
     if (ballNumber > start.size())
         throw InputError("--ball: " + std::to_string(ballNumber) + " is outside [1, " + std::to_string(start.size()) +
                          "] (" + sim->scene().key + " has " + std::to_string(start.size()) + " ball(s))");
     const int ball = static_cast<int>(ballNumber - 1);
-    std::unique_ptr<Simulation> other;
-    if (variant) {
-        try {
-            other = makeSimulation(variantOf(setup.spec, *variant));
-        } catch (const InputError& e) {
-            throw InputError("--compare: " + std::string(e.what()));
-        }
-        if (other->start().t != start.t || other->start().size() != start.size())
-            throw InputError("--compare: the two runs do not start at the same time with the same balls");
-    }
-    // The closed form the window draws: none for a run from a given state, or a ball or
-    // constants it does not cover.
+    const std::unique_ptr<Simulation> other = variant ? comparisonOf(setup.spec, start, *variant) : nullptr;
     const double tEnd = std::max(sim->dt() * static_cast<double>(setup.steps), sim->dt());
-    std::unique_ptr<reference::Reference> ref;
-    if (!setup.spec.init) {
-        try {
-            ref = reference::makeReference(setup.spec, tEnd);
-        } catch (const InputError&) {
-        }
-    }
-    if (ref && ball >= ref->balls())
-        ref.reset();
+    const std::unique_ptr<reference::Reference> ref = closedFormOf(setup.spec, tEnd, ball);
     if (kind == ui::ChartKind::Difference && !ui::differenceDrawable(bool(other), bool(ref)))
         throw InputError("--chart: the difference chart needs --compare (or a scene with a closed form)");
 
@@ -202,13 +258,8 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
         throw std::logic_error("chart: the process has a QCoreApplication; charts need a QApplication");
     const ui::MotionTrack track = simulate(*sim, setup.steps, ball, err);
     std::optional<ui::MotionTrack> compareTrack;
-    if (other) {
-        // As many steps as reach the main run's end (as the window's comparison).
-        const double ratio = sim->dt() / other->dt();
-        const auto steps =
-            static_cast<long long>(std::ceil(static_cast<double>(setup.steps) * ratio - 1e-9 * std::max(ratio, 1.0)));
-        compareTrack = simulate(*other, steps, ball, err);
-    }
+    if (other) // as many steps as reach the main run's end (as the window's comparison)
+        compareTrack = simulate(*other, stepsToReach(*sim, *other, setup.steps), ball, err);
     const ConservationMeter meter(*sim);
     ui::ChartRecipe recipe;
     recipe.kind = kind;
@@ -225,18 +276,12 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
     }
     const reference::Reference* r = ref.get();
     if (r)
-        recipe.closedForm = ui::ReferenceMotion{ui::RunDescription::tr("closed form"),
-                                                [r, ball](double t) -> std::optional<ui::Kinematics> {
-                                                    ui::Kinematics k{r->position(ball, t), r->velocity(ball, t)};
-                                                    if (!k.p.allFinite() || !k.v.allFinite())
-                                                        return std::nullopt;
-                                                    return k;
-                                                }};
+        recipe.closedForm = motionOf(*r, ball);
     const ui::RunFacts facts{&sim->spec(), sim->dt()};
     const ui::RunFacts compareFacts{other ? &other->spec() : nullptr, other ? other->dt() : 0.0};
-    if (caption)
+    if (request.caption)
         recipe.caption = ui::RunDescription::caption(facts, other ? &compareFacts : nullptr, bool(r));
-    ui::exportChartFigure(recipe, QString::fromStdString(path), options);
+    ui::exportChartFigure(recipe, QString::fromStdString(request.path), options);
     if (dataPath) {
         ui::ChartData data;
         data.run = &track;
@@ -246,7 +291,7 @@ int chartCommand(Args& args, std::ostream&, std::ostream& err)
         data.closedForm = recipe.closedForm ? &*recipe.closedForm : nullptr;
         data.timeUnit = sim->scene().timeUnit;
         data.lengthUnit = sim->scene().lengthUnit;
-        data.perUnitMass = meter.perUnitMass();
+        data.perUnitMass = recipe.units.perUnitMass;
         data.comments =
             ui::RunDescription::comments(facts, other ? &compareFacts : nullptr, bool(r), ball, start.size());
         writeFileAtomically(*dataPath, [&](std::ostream& out) { ui::writeChartCsv(out, data); });

@@ -165,7 +165,10 @@ private slots:
     {
         const ab::RunSpec spec = testing::spec(ab::SceneId::Box3d, {});
         const ab::ui::MotionTrack track = trackOf(spec, 200);
-        const ab::ui::MotionTrack other = trackOf(ab::variantOf(spec, {ab::ModelKind::Physical}), 200);
+        const ab::ui::MotionTrack other =
+            trackOf(ab::variantOf(spec, {ab::ModelKind::Physical, ab::Integrator::SymplecticEuler,
+                                         ab::ImpactMode::Located, std::nullopt}),
+                    200);
         ab::ui::ChartRecipe recipe;
         recipe.kind = ab::ui::ChartKind::Velocity;
         recipe.scene = &ab::sceneInfo(ab::SceneId::Box3d);
@@ -206,7 +209,10 @@ private slots:
     {
         const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d, {});
         const ab::ui::MotionTrack track = trackOf(spec, 100);
-        const ab::ui::MotionTrack other = trackOf(ab::variantOf(spec, {ab::ModelKind::Physical}), 100);
+        const ab::ui::MotionTrack other =
+            trackOf(ab::variantOf(spec, {ab::ModelKind::Physical, ab::Integrator::SymplecticEuler,
+                                         ab::ImpactMode::Located, std::nullopt}),
+                    100);
         ab::ui::ChartRecipe recipe;
         recipe.kind = ab::ui::ChartKind::Position;
         recipe.scene = &ab::sceneInfo(ab::SceneId::Bounce1d);
@@ -276,8 +282,9 @@ private slots:
         // against the two recordings sample by sample (both share dt = 0.01 s).
         const ab::RunSpec spec = testing::spec(ab::SceneId::Box3d, {});
         const ab::ui::MotionTrack run = trackOf(spec, 400);
-        const ab::ui::MotionTrack other =
-            trackOf(ab::variantOf(spec, {ab::ModelKind::Physical, ab::Integrator::Rk4}), 400);
+        const ab::ui::MotionTrack other = trackOf(
+            ab::variantOf(spec, {ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::Located, std::nullopt}),
+            400);
         ab::ui::MotionChart chart(ab::ui::ChartKind::Difference);
         chart.setComparison("report", "physical rk4");
         chart.configure(ab::sceneInfo(ab::SceneId::Box3d), 0);

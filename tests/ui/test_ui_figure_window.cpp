@@ -120,7 +120,8 @@ private slots:
         MainWindow w;
         w.show();
         w.showScene(SceneId::Box3d);
-        QVERIFY(compareWith(w, ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::Located, std::nullopt}));
+        QVERIFY(compareWith(
+            w, ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::Rk4, ab::ImpactMode::Located, std::nullopt}));
         QVERIFY(stepBoth(w, 300));
         w.controller().poll();
         QTRY_VERIFY(!w.charts()->chartView(ChartKind::Difference)->isHidden());

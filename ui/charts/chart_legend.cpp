@@ -97,14 +97,14 @@ void ChartLegend::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
             painter->setPen(e.pen);
             painter->drawLine(QLineF(p.at, p.at + QPointF(sample_, 0.0)));
         }
-        painter->setPen(QColor(0x22, 0x22, 0x22));
+        painter->setPen(text_);
         const QRectF text(p.at.x() + sampleOf(p.entry), p.at.y() - fm.height() / 2.0,
                           fm.horizontalAdvance(e.text) + 1.0, fm.height());
         painter->drawText(text, Qt::AlignLeft | Qt::AlignVCenter, e.text);
     }
     if (!caption_.isEmpty()) {
         painter->setFont(captionFont_);
-        painter->setPen(QColor(0x33, 0x33, 0x33));
+        painter->setPen(text_);
         painter->drawText(captionRect_, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, caption_);
     }
     painter->restore();

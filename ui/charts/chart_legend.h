@@ -29,6 +29,11 @@ public:
     const QString& caption() const { return caption_; }
     void setFonts(const QFont& legend, const QFont& caption);
     void setSampleLength(double length) { sample_ = length; }
+    void setTextColour(const QColor& colour)
+    {
+        text_ = colour;
+        update();
+    }
     // Lays the entries and the caption out in `width`; returns the height they take.
     double layout(double width);
     double height() const { return height_; }
@@ -48,6 +53,7 @@ private:
     QString caption_;
     QRectF captionRect_;
     QFont font_, captionFont_;
+    QColor text_ = QColor(0x22, 0x22, 0x22);
     double sample_ = 28.0;
     double width_ = 0.0, height_ = 0.0;
 };

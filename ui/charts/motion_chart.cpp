@@ -125,17 +125,39 @@ MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
     timeAxis_->setLabelFormat("%g");
     valueAxis_->setLabelFormat("%g");
     applyFonts();
+    followLegendStyle();
 }
 
 void MotionChart::applyPens()
 {
     for (int a = 0; a < 4; ++a) {
+        lines_[a]->setPen(linePen(kind_, a, a, LineFamily::Run, look_));
+        overlays_[a]->setPen(linePen(kind_, a, a, LineFamily::Comparison, look_));
+        if (a < 3)
+            references_[a]->setPen(linePen(kind_, a, a, LineFamily::ClosedForm, look_));
+    }
+}
+
+void MotionChart::restyleRunLines()
+{
+    // The run's first shown line is solid, the next ones dash-dot and dash-dot-dot: only
+    // the style changes, the colour and width stay as the theme or lecture mode set them
+    // (and the pen ui/theme/appearance.cpp scales from, kept as "ab_basePen", follows).
+    for (int a = 0; a < 4; ++a) {
         const auto at = std::find(shownAxes_.begin(), shownAxes_.end(), a);
         const int order = at == shownAxes_.end() ? 0 : int(at - shownAxes_.begin());
-        lines_[a]->setPen(linePen(kind_, a, order, LineFamily::Run, look_));
-        overlays_[a]->setPen(linePen(kind_, a, order, LineFamily::Comparison, look_));
-        if (a < 3)
-            references_[a]->setPen(linePen(kind_, a, order, LineFamily::ClosedForm, look_));
+        const Qt::PenStyle style = linePen(kind_, a, order, LineFamily::Run, look_).style();
+        QPen pen = lines_[a]->pen();
+        if (pen.style() == style)
+            continue;
+        pen.setStyle(style);
+        lines_[a]->setPen(pen);
+        const QVariant base = lines_[a]->property("ab_basePen");
+        if (base.canConvert<QPen>()) {
+            QPen b = base.value<QPen>();
+            b.setStyle(style);
+            lines_[a]->setProperty("ab_basePen", QVariant::fromValue(b));
+        }
     }
 }
 
@@ -149,6 +171,7 @@ void MotionChart::applyFonts()
         axis->setLabelsFont(labels);
         axis->setTitleFont(labels);
     }
+    legend()->setFont(labels); // hidden, but what a theme or lecture mode scales (followLegendStyle)
     legend_->setFonts(labels, look_.font(font(), look_.captionPt));
     legend_->setSampleLength(look_.px(look_.textPt) * 2.6);
     placeLegend();
@@ -234,7 +257,7 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
             references_[a]->clear();
     }
     diffT_.clear();
-    applyPens();
+    restyleRunLines();
     applyNames();
     haveRange_ = false;
     rateHi_ = 0.0;

@@ -112,6 +112,10 @@ protected:
 private:
     void applyFonts();
     void applyPens();
+    void restyleRunLines();
+    // The drawn legend follows what a theme or lecture mode sets on QLegend (hidden: its
+    // font and label colour) and on the lines' pens.
+    void followLegendStyle();
     void updateLegend();
     void placeLegend();
     // The difference chart: the run's positions at up to 4 samples a column, then minus

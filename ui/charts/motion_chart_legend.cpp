@@ -4,12 +4,35 @@
 #include "motion_chart.h"
 
 #include <QGraphicsSceneResizeEvent>
+#include <QLegend>
 #include <QLineSeries>
 
 #include <algorithm>
 #include <cmath>
 
 namespace ab::ui {
+
+void MotionChart::followLegendStyle()
+{
+    connect(legend(), &QLegend::fontChanged, this, [this](const QFont& f) {
+        QFont caption = f;
+        const double ratio = look_.captionPt / look_.textPt;
+        if (f.pointSizeF() > 0)
+            caption.setPointSizeF(f.pointSizeF() * ratio);
+        else
+            caption.setPixelSize(std::max(1, int(f.pixelSize() * ratio + 0.5)));
+        legend_->setFonts(f, caption);
+        placeLegend();
+    });
+    connect(legend(), &QLegend::labelColorChanged, this, [this](const QColor& c) {
+        legend_->setTextColour(c);
+        update();
+    });
+    for (int a = 0; a < 4; ++a)
+        for (QLineSeries* s : {lines_[a], overlays_[a], a < 3 ? references_[a] : nullptr})
+            if (s)
+                connect(s, &QXYSeries::penChanged, this, [this] { updateLegend(); });
+}
 
 void MotionChart::resizeEvent(QGraphicsSceneResizeEvent* event)
 {
