@@ -29,6 +29,7 @@ public:
     const QString& caption() const { return caption_; }
     void setFonts(const QFont& legend, const QFont& caption);
     void setSampleLength(double length) { sample_ = length; }
+    const QColor& textColour() const { return text_; }
     void setTextColour(const QColor& colour)
     {
         text_ = colour;

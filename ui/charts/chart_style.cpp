@@ -108,19 +108,6 @@ QPen linePen(ChartKind kind, int line, int order, LineFamily family, const Chart
     return pen;
 }
 
-QColor familyInk(LineFamily family)
-{
-    switch (family) {
-    case LineFamily::Run:
-        return QColor(0x33, 0x33, 0x33);
-    case LineFamily::ClosedForm:
-        return QColor(0x55, 0x55, 0x55);
-    case LineFamily::Comparison:
-        return comparisonTint;
-    }
-    return Qt::black;
-}
-
 QPen cursorPen(const ChartLook& look)
 {
     // A bluish grey of its own (no other line or text is drawn in it), 0.72 of a run line.

@@ -39,8 +39,6 @@ enum class LineFamily { Run, ClosedForm, Comparison };
 QColor lineColour(ChartKind kind, int line, LineFamily family = LineFamily::Run);
 // Line `line`, the `order`-th line the chart shows (0-based), of `family`.
 QPen linePen(ChartKind kind, int line, int order, LineFamily family, const ChartLook& look);
-// The legend's neutral ink for an entry that stands for a whole family of lines.
-QColor familyInk(LineFamily family);
 QPen cursorPen(const ChartLook& look);
 
 } // namespace ab::ui

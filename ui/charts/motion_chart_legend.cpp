@@ -26,7 +26,7 @@ void MotionChart::followLegendStyle()
     });
     connect(legend(), &QLegend::labelColorChanged, this, [this](const QColor& c) {
         legend_->setTextColour(c);
-        update();
+        updateLegend();
     });
     for (int a = 0; a < 4; ++a)
         for (QLineSeries* s : {lines_[a], overlays_[a], a < 3 ? references_[a] : nullptr})
@@ -82,8 +82,11 @@ void MotionChart::updateLegend()
             entries.push_back({QPen(Qt::NoPen), mainName_ + ":"});
         for (int a : shownAxes_)
             entries.push_back({lines_[a]->pen(), baseNames_[a]});
+        // The closed form's entry in the text's colour (it stands for every axis); the
+        // comparison's in its first line's, as a theme shows it (its own violet family).
         auto family = [&](QPen pen, LineFamily f, const QString& name) {
-            pen.setColor(familyInk(f));
+            if (f == LineFamily::ClosedForm)
+                pen.setColor(legend_->textColour());
             entries.push_back({pen, name});
         };
         if (closedForm)
