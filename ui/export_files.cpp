@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "export_files.h"
 
-#include "charts/motion_track.h"
+#include "charts/chart_data_csv.h"
 
 #include "core/io/atomic_file.h"
 #include "core/params.h"
@@ -69,20 +69,20 @@ private:
 
 } // namespace
 
-void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path, const ExportProgress& progress,
-                   const MotionTrack* compare)
+void saveChartCsv(const ChartData& data, const QString& path, const ExportProgress& progress)
 {
+    const std::size_t rows = data.run->size() + data.comments.size() + 1; // the comments, the header, a row a sample
     writeFileAtomically(path.toStdString(), [&](std::ostream& out) {
         if (!progress) {
-            writeMotionCsv(out, track, axes, ball, compare);
+            writeChartCsv(out, data);
             return;
         }
-        LineCounter counter(out.rdbuf(), track.size() + 1, progress); // the header and one line a sample
+        LineCounter counter(out.rdbuf(), rows, progress);
         std::ostream counted(&counter);
         counted.exceptions(std::ios::badbit);
-        writeMotionCsv(counted, track, axes, ball, compare);
+        writeChartCsv(counted, data);
         counted.flush();
-        if (!progress(track.size() + 1, track.size() + 1))
+        if (!progress(rows, rows))
             throw ExportCancelled();
     });
 }

@@ -13,7 +13,7 @@
 
 namespace ab::ui {
 
-class MotionTrack;
+struct ChartData;
 
 // Saves `image` as PNG; throws InputError naming the path and the reason.
 void saveImageAtomically(const QImage& image, const QString& path);
@@ -26,9 +26,9 @@ struct ExportCancelled : std::runtime_error {
 // Told (rows written, rows in all) every few thousand rows; returns false to cancel.
 using ExportProgress = std::function<bool(std::size_t done, std::size_t total)>;
 
-// Writes the track (and a comparison run's, prefixed `compare_`) as CSV (writeMotionCsv);
-// throws InputError, or ExportCancelled when `progress` says stop (nothing is written).
-void saveMotionCsv(const MotionTrack& track, int axes, int ball, const QString& path,
-                   const ExportProgress& progress = {}, const MotionTrack* compare = nullptr);
+// Writes the charts' data as CSV (writeChartCsv: the run, its closed form and a
+// comparison run, with comment lines saying how it was made); throws InputError, or
+// ExportCancelled when `progress` says stop (nothing is written).
+void saveChartCsv(const ChartData& data, const QString& path, const ExportProgress& progress = {});
 
 } // namespace ab::ui

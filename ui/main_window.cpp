@@ -215,21 +215,9 @@ void MainWindow::showReference()
         } catch (const InputError&) {
         }
     }
-    const int ball = controller_.selectedBall();
-    // Beside a comparison run the closed form would be a third line per axis, dashed like
-    // the comparison's dotted one: the legend could no longer be read, so it gives way.
-    if (!reference_ || ball >= reference_->balls() || controller_.comparing()) {
-        charts_->setReference(nullptr);
-        return;
-    }
-    const reference::Reference* ref = reference_.get();
-    const ReferenceMotion motion{tr("closed form"), [ref, ball](double t) -> std::optional<Kinematics> {
-                                     Kinematics k{ref->position(ball, t), ref->velocity(ball, t)};
-                                     if (!k.p.allFinite() || !k.v.allFinite())
-                                         return std::nullopt; // never drawn
-                                     return k;
-                                 }};
-    charts_->setReference(&motion);
+    // Drawn beside a comparison run too: the legend names each family of lines once.
+    const std::optional<ReferenceMotion> motion = closedFormMotion();
+    charts_->setReference(motion ? &*motion : nullptr);
 }
 
 bool MainWindow::resumeFromLookedBackMoment()

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "charts/motion_chart.h"
+#include "export_options_dialog.h"
 #include "panels/chart_panel.h"
 #include "panels/run_options_panel.h"
 #include "sim/run_controller.h"
@@ -50,8 +51,10 @@ public:
     // the core's refusal (also shown), and then nothing changes.
     std::optional<QString> showSetup(const RunSpec& spec, const RunOptions& options);
 
-    // Exports; each throws InputError naming the path and the reason.
-    void exportChartTo(ChartKind kind, const QString& path);
+    // Exports; each throws InputError naming the path and the reason. A chart is drawn
+    // for its size (a report's column by default), with the caption and the time cursor
+    // only when asked for.
+    void exportChartTo(ChartKind kind, const QString& path, const ChartExportChoice& how = {});
     void exportDataTo(const QString& path);
     void exportViewTo(const QString& path);
 
@@ -100,6 +103,8 @@ private:
     void ballSelected(int ball);
     // The scene's closed form, drawn dashed beside the run where the core has one.
     void showReference();
+    // The closed form of the selected ball, if the run has one (reference_).
+    std::optional<ReferenceMotion> closedFormMotion() const;
     void refresh();
     void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
     ChartUnits chartUnits() const; // of the current run's model
@@ -136,6 +141,7 @@ private:
     QTimer turntable_;
     std::optional<SceneId> framedScene_;
     QString lastDirectory_;
+    ChartExportChoice lastChartExport_; // the export dialog's last choice
     std::unique_ptr<reference::Reference> reference_;
     PresetActions* presets_ = nullptr;
     FigureActions* figures_ = nullptr;

@@ -24,16 +24,22 @@ const std::array commands{
     Command{"list",
             "list                      scenes, parameters (unit, default, range, equation), models, integrators",
             listCommand},
-    Command{"run", "run SCENE [options]       simulate headless and write the trajectory CSV", runCommand},
+    Command{"run",
+            "run SCENE [options]       simulate headless and write the trajectory CSV\n"
+            "                            (--meta: `#` lines with the program, settings and constants first)",
+            runCommand},
     Command{"bench",
             "bench [options]           cost per ball-step of many-balls (--balls N... --threads T\n"
             "                            --broadphase grid|all-pairs --model physical|report --steps S\n"
             "                            --repeats R --out FILE.csv --markdown FILE.md)",
             benchCommand},
     Command{"chart",
-            "chart SCENE [options]     the window's chart of one ball as PNG or SVG, headless:\n"
-            "                            --chart position|velocity|energy --out FILE.png|FILE.svg [--ball B]\n"
-            "                            [--width W] [--height H] and the run options (B = 1 is the first ball)",
+            "chart SCENE [options]     the window's chart as PNG, SVG or PDF, headless:\n"
+            "                            --chart position|velocity|energy|momentum|activity|difference\n"
+            "                            --out FILE.png|FILE.svg|FILE.pdf [--ball B] (B = 1 is the first ball)\n"
+            "                            [--size report-column|report-full|slide|WxH|WxHmm] [--dpi N]\n"
+            "                            [--caption] [--compare MODEL[:INTEGRATOR[:IMPACTS]]] [--data FILE.csv]\n"
+            "                            [--width W] [--height H] and the run options",
             chartCommand},
     Command{"stability",
             "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
@@ -43,7 +49,8 @@ const std::array commands{
             studyCommand},
     Command{"figure",
             "figure 2.5|2.6|2.7|3.1     the report's figure redrawn from the report model, headless:\n"
-            "                            --out FILE.png|FILE.svg [--width W] [--height H]",
+            "                            --out FILE.png|FILE.svg|FILE.pdf [--size report-column|report-full|\n"
+            "                            slide|WxH|WxHmm] [--dpi N] [--width W] [--height H]",
             figureCommand},
     Command{"video",
             "video SCENE [options]     the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL):\n"

@@ -9,6 +9,7 @@
 #include "../../core/io/atomic_file.h"
 #include "../../core/io/trajectory_csv.h"
 #include "../../core/physical/physical_simulation.h"
+#include "../../ui/charts/run_description.h"
 
 #include <ostream>
 
@@ -97,6 +98,7 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err)
     const long long every = args.integer("every", 1, 1'000'000'000'000LL).value_or(1);
     const auto outPath = args.option("out");
     const bool summary = args.flag("summary");
+    const bool meta = args.flag("meta");
     args.finish();
 
     const auto sim = makeSimulation(setup.spec);
@@ -111,6 +113,10 @@ int runCommand(Args& args, std::ostream& out, std::ostream& err)
     bool diverged = false;
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
+        if (csv && meta) // `#` lines before the contract's header, only when asked for
+            for (const std::string& line : ui::RunDescription::comments({&sim->spec(), sim->dt()}, nullptr, false, -1,
+                                                                        start.size(), "trajectory"))
+                *csv << "# " << line << "\n";
         if (csv)
             writeTrajectoryHeader(*csv, spin);
         runRecorded(

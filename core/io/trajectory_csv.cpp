@@ -26,12 +26,10 @@ void writeTrajectoryHeader(std::ostream& out, bool spin)
 
 void writeTrajectoryRows(std::ostream& out, const State& s, bool spin)
 {
-    // "%.17g" as the contract asks, through std::to_chars so a locale's decimal comma
-    // never reaches the file.
+    // Full precision in the shortest form that reads back to the same double (as the
+    // window's CSV), through std::to_chars so a locale's decimal comma never reaches the file.
     char line[256];
-    auto put = [&](char* at, double x) {
-        return std::to_chars(at, line + sizeof line, x, std::chars_format::general, 17).ptr;
-    };
+    auto put = [&](char* at, double x) { return std::to_chars(at, line + sizeof line, x).ptr; };
     for (int i = 0; i < s.size(); ++i) {
         char* at = put(line, s.t);
         *at++ = ',';

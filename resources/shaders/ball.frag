@@ -46,13 +46,17 @@ void main()
     float specular = s * s * s;
     vec3 lit = ballColour.rgb * (0.42 + 0.68 * diffuse) + vec3(0.35 * specular);
     if (ghost == 1) {
-        // Washed towards white and see-through, with a dark outline: |n.d| is the cosine
-        // between the normal and the ray, 1 at the centre of the disc and 0 at its edge,
-        // so rim = 1 - |n.d| grows from 0 to 1 towards the outline.
+        // Tinted towards the charts' comparison violet, washed towards white and
+        // see-through, with a dark outline (the ghost is drawn a little larger than the
+        // ball, so one that agrees with the run shows as a violet ring around it): |n.d|
+        // is the cosine between the normal and the ray, 1 at the centre of the disc and 0
+        // at its edge, so rim = 1 - |n.d| grows from 0 to 1 towards the outline.
         float rim = 1.0 - abs(dot(n, d));
         float edge = smoothstep(0.55, 0.8, rim);
-        vec3 pale = mix(lit, vec3(1.0), 0.6);
-        fragColour = vec4(mix(pale, 0.35 * ballColour.rgb, edge), mix(0.45, 0.95, edge));
+        vec3 hue = mix(ballColour.rgb, vec3(0.42, 0.12, 0.72), 0.7);
+        vec3 tinted = hue * (0.42 + 0.68 * diffuse) + vec3(0.35 * specular);
+        vec3 pale = mix(tinted, vec3(1.0), 0.45);
+        fragColour = vec4(mix(pale, 0.45 * hue, edge), mix(0.45, 0.95, edge));
     } else {
         fragColour = vec4(lit, 1.0);
     }

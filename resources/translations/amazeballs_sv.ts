@@ -253,6 +253,53 @@
     </message>
 </context>
 <context>
+    <name>RunDescription</name>
+    <message>
+        <source>Stage %1 (%2)</source>
+        <translation>Steg %1 (%2)</translation>
+    </message>
+    <message>
+        <source>, report model (the report&apos;s own step and impact rules)</source>
+        <translation>, rapportens modell (rapportens egna steg och stötregler)</translation>
+    </message>
+    <message>
+        <source>, physical model, integrator %1, impacts %2</source>
+        <translation>, fysikalisk modell, integrator %1, stötar %2</translation>
+    </message>
+    <message>
+        <source>at the step&apos;s end</source>
+        <translation>vid stegets slut</translation>
+    </message>
+    <message>
+        <source>located in the step</source>
+        <translation>lokaliserade inom steget</translation>
+    </message>
+    <message>
+        <source>, dt = %1 %2</source>
+        <translation>, dt = %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (report: %3)</source>
+        <translation>%1 = %2 (rapporten: %3)</translation>
+    </message>
+    <message>
+        <source>the report&apos;s constants</source>
+        <translation>rapportens konstanter</translation>
+    </message>
+    <message>
+        <source>started from a given state</source>
+        <translation>startad från ett givet tillstånd</translation>
+    </message>
+    <message>
+        <source>dotted: %1</source>
+        <translation>prickad: %1</translation>
+    </message>
+    <message>
+        <source>dashed: closed form</source>
+        <translation>streckad: sluten form</translation>
+    </message>
+</context>
+<context>
     <name>SceneGeometry</name>
     <message>
         <source>y (%1)</source>
@@ -486,6 +533,85 @@
     </message>
 </context>
 <context>
+    <name>ab::ui::ExportOptionsDialog</name>
+    <message>
+        <source>Figure size and contents</source>
+        <translation>Figurens storlek och innehåll</translation>
+    </message>
+    <message>
+        <source>Report column (85 mm wide)</source>
+        <translation>Rapportspalt (85 mm bred)</translation>
+    </message>
+    <message>
+        <source>Report full width (170 mm)</source>
+        <translation>Rapportens hela bredd (170 mm)</translation>
+    </message>
+    <message>
+        <source>Slide (1920 x 1080 px, 16:9)</source>
+        <translation>Bildspel (1920 x 1080 px, 16:9)</translation>
+    </message>
+    <message>
+        <source>Custom size</source>
+        <translation>Egen storlek</translation>
+    </message>
+    <message>
+        <source>For</source>
+        <translation>För</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Storlek</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>Pixels per inch of the PNG: 300 for print</source>
+        <translation>PNG-bildens bildpunkter per tum: 300 för tryck</translation>
+    </message>
+    <message>
+        <source>SVG and PDF are vector images: they have no dpi</source>
+        <translation>SVG och PDF är vektorbilder: de har ingen dpi</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Upplösning</translation>
+    </message>
+    <message>
+        <source>Caption: scene, model, integrator, impacts, dt and changed constants</source>
+        <translation>Bildtext: scen, modell, integrator, stötar, dt och ändrade konstanter</translation>
+    </message>
+    <message>
+        <source>Draw the time cursor</source>
+        <translation>Rita tidsmarkören</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>size</source>
+        <translation>storlek</translation>
+    </message>
+    <message>
+        <source>%1 x %2 mm</source>
+        <translation>%1 x %2 mm</translation>
+    </message>
+    <message>
+        <source>, %1 x %2 px at %3 dpi</source>
+        <translation>, %1 x %2 px vid %3 dpi</translation>
+    </message>
+</context>
+<context>
     <name>ab::ui::FigureActions</name>
     <message>
         <source>F&amp;igures</source>
@@ -517,6 +643,14 @@
     <message>
         <source>Export failed</source>
         <translation>Exporten misslyckades</translation>
+    </message>
+    <message>
+        <source>Export PDF...</source>
+        <translation>Exportera PDF...</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-dokument (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -652,14 +786,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>sluten form</translation>
     </message>
     <message>
-        <source>SVG image (*.svg);;PNG image (*.png)</source>
-        <translation>SVG-bild (*.svg);;PNG-bild (*.png)</translation>
-    </message>
-    <message>
-        <source>PNG image (*.png);;SVG image (*.svg)</source>
-        <translation>PNG-bild (*.png);;SVG-bild (*.svg)</translation>
-    </message>
-    <message>
         <source>CSV table (*.csv)</source>
         <translation>CSV-tabell (*.csv)</translation>
     </message>
@@ -702,6 +828,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>solid: %1, ghost: %2</source>
         <translation>hel: %1, spöke: %2</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg);;PDF document (*.pdf);;PNG image (*.png)</source>
+        <translation>SVG-bild (*.svg);;PDF-dokument (*.pdf);;PNG-bild (*.png)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;PDF document (*.pdf);;SVG image (*.svg)</source>
+        <translation>PNG-bild (*.png);;PDF-dokument (*.pdf);;SVG-bild (*.svg)</translation>
     </message>
 </context>
 <context>
@@ -797,6 +931,26 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>closed form</source>
         <translation>sluten form</translation>
+    </message>
+    <message>
+        <source>Difference in position of %1</source>
+        <translation>Skillnad i läge för %1</translation>
+    </message>
+    <message>
+        <source>difference (%1)</source>
+        <translation>skillnad (%1)</translation>
+    </message>
+    <message>
+        <source>simulation</source>
+        <translation>simulering</translation>
+    </message>
+    <message>
+        <source>(no comparison or closed form to subtract)</source>
+        <translation>(ingen jämförelse eller sluten form att dra ifrån)</translation>
+    </message>
+    <message>
+        <source>= %1 minus %2</source>
+        <translation>= %1 minus %2</translation>
     </message>
 </context>
 <context>
@@ -911,6 +1065,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Moving balls and impacts (many balls)</source>
         <translation>Rörliga bollar och stötar (många bollar)</translation>
+    </message>
+    <message>
+        <source>Difference between the runs (with a comparison or a closed form)</source>
+        <translation>Skillnad mellan körningarna (med en jämförelse eller en sluten form)</translation>
     </message>
 </context>
 <context>

@@ -119,7 +119,8 @@ private slots:
         QTest::addColumn<QString>("mentions");
         QTest::newRow("unknown chart") << QStringList{"--chart", "speed"} << "--chart: unknown chart 'speed'";
         QTest::newRow("missing chart") << QStringList{} << "missing --chart";
-        QTest::newRow("image type") << QStringList{"--chart", "position", "--ext", "jpg"} << "must end in .png or .svg";
+        QTest::newRow("image type") << QStringList{"--chart", "position", "--ext", "jpg"}
+                                    << "unknown image type 'jpg' (use .png, .svg or .pdf)";
         QTest::newRow("ball out of range")
             << QStringList{"--chart", "position", "--ball", "2"} << "--ball: 2 is outside";
         QTest::newRow("bad parameter") << QStringList{"--chart", "position", "--set", "k=7"} << "k: 7 is outside";

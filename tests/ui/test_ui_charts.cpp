@@ -6,6 +6,7 @@
 #include "support/sim_helpers.h"
 
 #include "core/diagnostics/conservation.h"
+#include "ui/charts/chart_data_csv.h"
 #include "ui/charts/downsample.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
@@ -422,7 +423,7 @@ private slots:
         QVERIFY(chart.rateAxis()->max() >= peak);
     }
 
-    void motionCsvHasTheShownAxesAndEverySample()
+    void chartCsvHasUnitsTheShownAxesEverySampleAndOneBasedBalls()
     {
         ab::ConservationSample scene;
         scene.energy = {3.0, 4.0, 0.0}; // kinetic, potential, spring: total 7
@@ -433,14 +434,60 @@ private slots:
         track.add(0, 0.0, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6), scene);
         track.add(1, 0.5, Eigen::Vector3d(1, 2.5, 3), Eigen::Vector3d(4, 5, 6), scene);
         std::ostringstream vertical, full;
-        ab::ui::writeMotionCsv(vertical, track, 1, 0);
-        const std::string header = "energy_total,energy_kinetic,energy_potential,energy_spring,momentum_x,"
-                                   "momentum_y,momentum_z,moving,impacts\n";
+        ab::ui::ChartData data;
+        data.run = &track;
+        data.axes = 1;
+        data.ball = 0;
+        data.comments = {"made by hand"};
+        ab::ui::writeChartCsv(vertical, data);
+        const std::string header =
+            "energy_total [m^2/s^2],energy_kinetic [m^2/s^2],energy_potential [m^2/s^2],energy_spring [m^2/s^2],"
+            "momentum_x [m/s],momentum_y [m/s],momentum_z [m/s],moving [balls],impacts [1]\n";
         QCOMPARE(QString::fromStdString(vertical.str()),
-                 QString::fromStdString("t,ball,y,vy," + header + "0,0,2,5,7,3,4,0,0.5,-1,2,2,9\n" +
-                                        "0.5,0,2.5,5,7,3,4,0,0.5,-1,2,2,9\n"));
-        ab::ui::writeMotionCsv(full, track, 3, 1);
-        QVERIFY(full.str().rfind("t,ball,x,y,z,vx,vy,vz," + header + "0,1,1,2,3,4,5,6,7,", 0) == 0);
+                 QString::fromStdString("# made by hand\nt [s],ball,y [m],vy [m/s]," + header +
+                                        "0,1,2,5,7,3,4,0,0.5,-1,2,2,9\n" + "0.5,1,2.5,5,7,3,4,0,0.5,-1,2,2,9\n"));
+        data.axes = 3;
+        data.ball = 1;
+        data.comments.clear();
+        data.perUnitMass = false;
+        ab::ui::writeChartCsv(full, data);
+        QVERIFY(full.str().rfind("t [s],ball,x [m],y [m],z [m],vx [m/s],vy [m/s],vz [m/s],energy_total [kg m^2/s^2],",
+                                 0) == 0);
+        QVERIFY(full.str().find("\n0,2,1,2,3,4,5,6,7,") != std::string::npos); // the second ball is ball 2
+    }
+
+    void chartCsvWritesTheClosedFormAndTheComparisonAtEachRowsTime()
+    {
+        ab::ConservationSample scene;
+        ab::ui::MotionTrack run, other;
+        for (int i = 0; i < 3; ++i) {
+            run.add(i, 0.5 * i, Eigen::Vector3d(0, 10.0 - i, 0), Eigen::Vector3d(0, -1, 0), scene);
+            other.add(i, 0.5 * i, Eigen::Vector3d(0, 10.0 - 2 * i, 0), Eigen::Vector3d(0, -2, 0), scene);
+        }
+        // A closed form y = 10 - t^2, vy = -2 t, by hand.
+        const ab::ui::ReferenceMotion closed{
+            "closed form", [](double t) -> std::optional<ab::ui::Kinematics> {
+                return ab::ui::Kinematics{Eigen::Vector3d(0, 10 - t * t, 0), Eigen::Vector3d(0, -2 * t, 0)};
+            }};
+        ab::ui::ChartData data;
+        data.run = &run;
+        data.axes = 1;
+        data.comparison = &other;
+        data.closedForm = &closed;
+        std::ostringstream out;
+        ab::ui::writeChartCsv(out, data);
+        const QStringList lines = QString::fromStdString(out.str()).split('\n', Qt::SkipEmptyParts);
+        const QStringList header = lines.front().split(',');
+        QCOMPARE(lines.size(), 4);
+        const int y = int(header.indexOf("y_closed_form [m]")), vy = int(header.indexOf("vy_closed_form [m/s]"));
+        const int cy = int(header.indexOf("compare_y [m]")), ct = int(header.indexOf("compare_t [s]"));
+        QVERIFY(y > 0 && vy > 0 && cy > 0 && ct > 0);
+        const QStringList last = lines[3].split(','); // t = 1
+        QCOMPARE(last.size(), header.size());
+        QCOMPARE(last[y].toDouble(), 9.0);
+        QCOMPARE(last[vy].toDouble(), -2.0);
+        QCOMPARE(last[ct].toDouble(), 1.0);
+        QCOMPARE(last[cy].toDouble(), 6.0);
     }
 };
 

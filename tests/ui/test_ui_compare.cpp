@@ -16,6 +16,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QLineSeries>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -251,19 +252,26 @@ private slots:
         w.exportDataTo(csv);
         QFile f(csv);
         QVERIFY(f.open(QIODevice::ReadOnly));
-        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        QVERIFY(lines.front().startsWith("# Amazeballs "));
+        QVERIFY(lines
+                    .filter(QRegularExpression("^# comparison \\(compare_ columns\\): model physical, integrator "
+                                               "symplectic-euler"))
+                    .size() == 1);
+        while (lines.front().startsWith('#')) // the settings
+            lines.removeFirst();
         const QStringList header = lines.front().split(',');
-        QVERIFY(header.contains("compare_t"));
-        const int y = int(header.indexOf("compare_y"));
+        QVERIFY(header.contains("compare_t [step]"));
+        const int y = int(header.indexOf("compare_y [unit]"));
         QVERIFY(y > 0);
-        QVERIFY(header.contains("compare_energy_total"));
+        QVERIFY(header.contains("compare_energy_total [unit^2/step^2]"));
         QCOMPARE(lines.size(), 31); // the header and 30 recorded states
         const ab::ui::MotionTrack other = trackOf(*w.controller().comparisonEngine());
         for (int i = 1; i < lines.size(); ++i) {
             const QStringList cells = lines[i].split(',');
             QCOMPARE(cells.size(), header.size());
-            QCOMPARE(cells[header.indexOf("compare_t")].toDouble(), cells[0].toDouble()); // the same moment
-            QCOMPARE(cells[y].toDouble(), other.p(1)[std::size_t(i - 1)]);                // shortest round trip
+            QCOMPARE(cells[header.indexOf("compare_t [step]")].toDouble(), cells[0].toDouble()); // the same moment
+            QCOMPARE(cells[y].toDouble(), other.p(1)[std::size_t(i - 1)]);                    // shortest round trip
         }
         const QString svg = dir.filePath("e.svg");
         w.exportChartTo(ab::ui::ChartKind::Energy, svg);

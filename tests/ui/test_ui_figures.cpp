@@ -188,7 +188,7 @@ private slots:
         QTest::newRow("unknown figure") << QStringList{"figure", "2.8", "--out", "x.png"} << "2.8";
         QTest::newRow("no figure") << QStringList{"figure", "--out", "x.png"} << "figure number";
         QTest::newRow("no --out") << QStringList{"figure", "2.5"} << "--out";
-        QTest::newRow("bad type") << QStringList{"figure", "2.5", "--out", "x.gif"} << ".png or .svg";
+        QTest::newRow("bad type") << QStringList{"figure", "2.5", "--out", "x.gif"} << ".png, .svg or .pdf";
         QTest::newRow("tiny width") << QStringList{"figure", "2.5", "--out", "x.png", "--width", "5"} << "--width";
         QTest::newRow("unknown option") << QStringList{"figure", "2.5", "--out", "x.png", "--dpi", "3"} << "--dpi";
     }

@@ -6,6 +6,7 @@
 // form says so instead of offering the study; a cancelled CSV export leaves no file.
 #include "support/sim_helpers.h"
 
+#include "ui/charts/chart_data_csv.h"
 #include "ui/charts/motion_track.h"
 #include "ui/export_files.h"
 #include "ui/main_window.h"
@@ -291,8 +292,11 @@ private slots:
                       ab::ConservationSample{});
         QTemporaryDir dir;
         const QString path = dir.filePath("track.csv");
+        ab::ui::ChartData data;
+        data.run = &track;
+        data.axes = 1;
         int calls = 0;
-        QVERIFY_THROWS_EXCEPTION(ExportCancelled, saveMotionCsv(track, 1, 0, path, [&](std::size_t, std::size_t) {
+        QVERIFY_THROWS_EXCEPTION(ExportCancelled, saveChartCsv(data, path, [&](std::size_t, std::size_t) {
                                      ++calls;
                                      return false;
                                  }));
@@ -301,7 +305,7 @@ private slots:
 
         std::size_t lastDone = 0, lastTotal = 0;
         bool increasing = true;
-        saveMotionCsv(track, 1, 0, path, [&](std::size_t done, std::size_t total) {
+        saveChartCsv(data, path, [&](std::size_t done, std::size_t total) {
             increasing = increasing && done > lastDone;
             lastDone = done;
             lastTotal = total;

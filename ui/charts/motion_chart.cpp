@@ -3,6 +3,8 @@
 
 #include "ui/i18n/core_text.h"
 
+#include <QGraphicsSceneResizeEvent>
+
 #include "downsample.h"
 #include "nice_ticks.h"
 
@@ -18,36 +20,9 @@ namespace ab::ui {
 
 namespace {
 
-// x, y, z in the colours of the 3D view's axis triad.
-const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
-// Kinetic, potential, total, spring; and the activity chart's two lines.
-const QColor energyColours[4] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
-                                 QColor(0x8c, 0x56, 0x4b)};
-const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
-
-constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {{ChartKind::Position, "position"},
-                                                                {ChartKind::Velocity, "velocity"},
-                                                                {ChartKind::Energy, "energy"},
-                                                                {ChartKind::Momentum, "momentum"},
-                                                                {ChartKind::Activity, "activity"}};
-
-QColor lineColour(ChartKind kind, int line)
-{
-    switch (kind) {
-    case ChartKind::Energy:
-        return energyColours[line];
-    case ChartKind::Activity:
-        return activityColours[std::min(line, 1)];
-    default:
-        return axisColours[std::min(line, 2)];
-    }
-}
-
-void setMarkerVisible(QChart* chart, QLineSeries* series, bool visible)
-{
-    for (QLegendMarker* m : chart->legend()->markers(series))
-        m->setVisible(visible);
-}
+constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
+    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"},
+    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"}};
 
 // [lo, hi] widened to whole ticks, with ticks anchored at zero.
 void setNiceRange(QValueAxis* axis, double lo, double hi, int ticks)
@@ -71,7 +46,7 @@ QString squared(const QString& unit)
 const std::vector<ChartKind>& allChartKinds()
 {
     static const std::vector<ChartKind> kinds = {ChartKind::Position, ChartKind::Velocity, ChartKind::Energy,
-                                                 ChartKind::Momentum, ChartKind::Activity};
+                                                 ChartKind::Momentum, ChartKind::Activity, ChartKind::Difference};
     return kinds;
 }
 
@@ -85,6 +60,11 @@ bool chartApplies(ChartKind kind, SceneId scene)
     default:
         return true;
     }
+}
+
+bool differenceDrawable(bool comparing, bool closedForm)
+{
+    return comparing || closedForm;
 }
 
 std::string_view chartKey(ChartKind kind)
@@ -103,32 +83,25 @@ std::optional<ChartKind> parseChartKind(std::string_view key)
     return std::nullopt;
 }
 
-MotionChart::MotionChart(ChartKind kind)
-    : kind_(kind), timeAxis_(new QValueAxis), valueAxis_(new QValueAxis), cursor_(new QLineSeries)
+MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
+    : kind_(kind), look_(look), legend_(new ChartLegend(this)), timeAxis_(new QValueAxis), valueAxis_(new QValueAxis),
+      cursor_(new QLineSeries)
 {
     setTheme(QChart::ChartThemeLight); // before the fonts: a theme resets them
+    legend()->hide();                  // drawn by legend_, with each line's pen
     addAxis(timeAxis_, Qt::AlignBottom);
     addAxis(valueAxis_, Qt::AlignLeft);
-    auto add = [this](QLineSeries* s, const QPen& pen) {
+    auto add = [this](QLineSeries* s) {
         addSeries(s);
         s->attachAxis(timeAxis_);
         s->attachAxis(valueAxis_);
-        s->setPen(pen); // after addSeries: adding applies the theme's pen
         return s;
     };
     for (int a = 0; a < 4; ++a) {
-        const QColor colour = lineColour(kind, a);
-        lines_[a] = add(new QLineSeries, QPen(colour, a == 2 && kind == ChartKind::Energy ? 2.4 : 2.0));
-        // The comparison: the same colour, lighter and dotted, so each line's twin is plain.
-        QPen dotted(colour.lighter(135), 2.0, Qt::DotLine);
-        dotted.setCapStyle(Qt::FlatCap);
-        overlays_[a] = add(new QLineSeries, dotted);
-        setMarkerVisible(this, overlays_[a], false);
-        if (a == 3)
-            break;
-        QPen dashed(colour.darker(130), 1.6, Qt::DashLine);
-        references_[a] = add(new QLineSeries, dashed);
-        setMarkerVisible(this, references_[a], false);
+        lines_[a] = add(new QLineSeries);
+        overlays_[a] = add(new QLineSeries);
+        if (a < 3)
+            references_[a] = add(new QLineSeries);
     }
     if (kind == ChartKind::Activity) {
         // Impacts per unit of time on a second axis, on the right: their scale has
@@ -140,45 +113,79 @@ MotionChart::MotionChart(ChartKind kind)
             s->attachAxis(rateAxis_);
         }
         rateAxis_->setLabelFormat("%g");
-        rateAxis_->setLinePenColor(activityColours[1]);
-        rateAxis_->setLabelsColor(activityColours[1].darker(120));
-        valueAxis_->setLinePenColor(activityColours[0]);
-        valueAxis_->setLabelsColor(activityColours[0].darker(120));
+        rateAxis_->setLinePenColor(lineColour(kind, 1));
+        rateAxis_->setLabelsColor(lineColour(kind, 1).darker(120));
+        valueAxis_->setLinePenColor(lineColour(kind, 0));
+        valueAxis_->setLabelsColor(lineColour(kind, 0).darker(120));
     }
-    add(cursor_, QPen(QColor(90, 90, 90), 1.2));
-    setMarkerVisible(this, cursor_, false);
+    add(cursor_);
+    cursor_->setPen(cursorPen(look_)); // after addSeries: adding applies the theme's pen
+    applyPens();
     applyTimeRange();
     timeAxis_->setLabelFormat("%g");
     valueAxis_->setLabelFormat("%g");
-    legend()->setAlignment(Qt::AlignTop);
-    setMargins(QMargins(4, 4, 8, 4));
     applyFonts();
+    followLegendStyle();
+}
+
+void MotionChart::applyPens()
+{
+    for (int a = 0; a < 4; ++a) {
+        lines_[a]->setPen(linePen(kind_, a, a, LineFamily::Run, look_));
+        overlays_[a]->setPen(linePen(kind_, a, a, LineFamily::Comparison, look_));
+        if (a < 3)
+            references_[a]->setPen(linePen(kind_, a, a, LineFamily::ClosedForm, look_));
+    }
+}
+
+void MotionChart::restyleRunLines()
+{
+    // The run's first shown line is solid, the next ones dash-dot and dash-dot-dot: only
+    // the style changes, the colour and width stay as the theme or lecture mode set them
+    // (and the pen ui/theme/appearance.cpp scales from, kept as "ab_basePen", follows).
+    for (int a = 0; a < 4; ++a) {
+        const auto at = std::find(shownAxes_.begin(), shownAxes_.end(), a);
+        const int order = at == shownAxes_.end() ? 0 : int(at - shownAxes_.begin());
+        const Qt::PenStyle style = linePen(kind_, a, order, LineFamily::Run, look_).style();
+        QPen pen = lines_[a]->pen();
+        if (pen.style() == style)
+            continue;
+        pen.setStyle(style);
+        lines_[a]->setPen(pen);
+        const QVariant base = lines_[a]->property("ab_basePen");
+        if (base.canConvert<QPen>()) {
+            QPen b = base.value<QPen>();
+            b.setStyle(style);
+            lines_[a]->setProperty("ab_basePen", QVariant::fromValue(b));
+        }
+    }
 }
 
 void MotionChart::applyFonts()
 {
-    QFont title = font();
-    title.setPointSizeF(11.0);
-    title.setBold(true);
-    setTitleFont(title);
-    QFont labels = font();
-    labels.setPointSizeF(9.5);
+    setTitleFont(look_.font(font(), look_.titlePt, true));
+    const QFont labels = look_.font(font(), look_.textPt);
     for (QValueAxis* axis : {timeAxis_, valueAxis_, rateAxis_}) {
         if (!axis)
             continue;
         axis->setLabelsFont(labels);
         axis->setTitleFont(labels);
     }
-    legend()->setFont(labels);
+    legend()->setFont(labels); // hidden, but what a theme or lecture mode scales (followLegendStyle)
+    legend_->setFonts(labels, look_.font(font(), look_.captionPt));
+    legend_->setSampleLength(look_.px(look_.textPt) * 2.6);
+    placeLegend();
 }
 
 void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& units)
 {
-    static const char* axisNames[3][3] = {{"x", "y", "z"}, {"vx", "vy", "vz"}, {"px", "py", "pz"}};
+    static const char* axisNames[4][3] = {
+        {"x", "y", "z"}, {"vx", "vy", "vz"}, {"px", "py", "pz"}, {"\u0394x", "\u0394y", "\u0394z"}};
     const std::vector<int> axes = scene.axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
     switch (kind_) {
     case ChartKind::Position:
     case ChartKind::Velocity:
+    case ChartKind::Difference:
         shownAxes_ = axes;
         break;
     case ChartKind::Energy:
@@ -194,6 +201,7 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     const QString time = coreText(scene.timeUnit);
     const QString length = coreText(scene.lengthUnit);
     const QString who = scene.ballCount == 1 ? tr("the ball") : tr("ball %1").arg(ball + 1);
+    who_ = who;
     // Energy is m |v|^2: mass length^2 / time^2; momentum m v: mass length / time.
     const QString energyUnit = squared(length) + "/" + squared(time);
     const QString momentumUnit = length + "/" + time;
@@ -228,22 +236,28 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         names[0] = tr("moving balls");
         names[1] = tr("impacts per %1").arg(time);
         break;
+    case ChartKind::Difference:
+        setTitle(tr("Difference in position of %1").arg(who));
+        valueAxis_->setTitleText(tr("difference (%1)").arg(length));
+        break;
     }
     timeAxis_->setTitleText(tr("t (%1)").arg(time));
     for (int a = 0; a < 4; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->clear();
         if (a < 3 && names[a].isEmpty())
-            names[a] = QString::fromLatin1(axisNames[kind_ == ChartKind::Velocity   ? 1
-                                                     : kind_ == ChartKind::Momentum ? 2
+            names[a] = QString::fromUtf8(axisNames[kind_ == ChartKind::Velocity     ? 1
+                                                   : kind_ == ChartKind::Momentum   ? 2
+                                                   : kind_ == ChartKind::Difference ? 3
                                                                                     : 0][a]);
         baseNames_[a] = names[a];
         lines_[a]->setVisible(shown);
-        setMarkerVisible(this, lines_[a], shown);
         overlays_[a]->clear();
         if (a < 3)
             references_[a]->clear();
     }
+    diffT_.clear();
+    restyleRunLines();
     applyNames();
     haveRange_ = false;
     rateHi_ = 0.0;
@@ -287,6 +301,8 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
     }
     case ChartKind::Momentum:
         return track.momentum(line);
+    case ChartKind::Difference:
+        return track.p(line);
     case ChartKind::Activity:
         if (line == 0)
             return track.moving();
@@ -300,18 +316,19 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
 
 void MotionChart::applyNames()
 {
-    const bool comparing = !compareName_.isEmpty();
+    // The difference chart overlays nothing: its lines are the run minus the other one.
+    const bool comparing = !compareName_.isEmpty() && kind_ != ChartKind::Difference;
     for (int a = 0; a < 4; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->setName(comparing ? baseNames_[a] + " (" + mainName_ + ")" : baseNames_[a]);
         overlays_[a]->setName(baseNames_[a] + " (" + compareName_ + ")");
         overlays_[a]->setVisible(comparing && shown);
-        setMarkerVisible(this, overlays_[a], comparing && shown);
         if (!comparing)
             overlays_[a]->clear();
         if (a < 3)
             references_[a]->setName(baseNames_[a] + " (" + (reference_ ? reference_->name : tr("closed form")) + ")");
     }
+    updateLegend();
 }
 
 void MotionChart::setComparison(const QString& mainName, const QString& compareName)
@@ -327,11 +344,21 @@ void MotionChart::showComparisonTrack(const MotionTrack& track, int columns)
 {
     if (compareName_.isEmpty())
         return;
+    if (kind_ == ChartKind::Difference) {
+        drawDifference(&track);
+        return;
+    }
     drawTrack(track, columns, overlays_);
 }
 
 void MotionChart::showTrack(const MotionTrack& track, int columns)
 {
+    if (kind_ == ChartKind::Difference) {
+        keepDifferenceRun(track, columns);
+        if (compareName_.isEmpty())
+            drawDifference(nullptr); // against the closed form; a comparison comes next
+        return;
+    }
     drawTrack(track, columns, lines_);
 }
 
@@ -391,6 +418,7 @@ void MotionChart::setCursorTime(std::optional<double> t)
 
 void MotionChart::placeCursor()
 {
+    cursor_->setVisible(cursorT_.has_value()); // not even an empty element without one
     if (!cursorT_) {
         cursor_->clear();
         return;
@@ -416,6 +444,8 @@ void MotionChart::setReference(const ReferenceMotion* reference, int columns)
 void MotionChart::sampleReference()
 {
     const bool drawn = reference_ && (kind_ == ChartKind::Position || kind_ == ChartKind::Velocity);
+    if (!drawn)
+        updateLegend();
     for (int a = 0; a < 3; ++a) {
         const bool shown = drawn && std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         QList<QPointF> points;
@@ -430,8 +460,9 @@ void MotionChart::sampleReference()
         if (drawn)
             references_[a]->setName(baseNames_[a] + " (" + reference_->name + ")");
         references_[a]->replace(points);
-        setMarkerVisible(this, references_[a], shown);
     }
+    if (drawn)
+        updateLegend();
     placeCursor();
 }
 

@@ -6,9 +6,14 @@
 // the number of moving balls with the impacts per unit of time (many-balls). All are
 // downsampled for drawing, with a time cursor, and a dashed closed form beside the
 // position and velocity when one is given. A comparison run's lines (the same scene
-// computed another way) are overlaid, lighter and dotted, on every chart.
+// computed another way) are overlaid, dotted and in a darker family of colours, on every
+// chart; the difference chart draws the run minus the comparison (or minus the closed
+// form when there is no comparison), per axis. The legend and an optional caption are
+// drawn below the plot (chart_legend.h), each entry in its line's own pen.
 #pragma once
 
+#include "chart_legend.h"
+#include "chart_style.h"
 #include "motion_track.h"
 
 #include "core/scene.h"
@@ -28,14 +33,18 @@ class QValueAxis;
 
 namespace ab::ui {
 
-enum class ChartKind { Position, Velocity, Energy, Momentum, Activity };
+enum class ChartKind { Position, Velocity, Energy, Momentum, Activity, Difference };
 
 const std::vector<ChartKind>& allChartKinds();
-std::string_view chartKey(ChartKind kind); // "position", "velocity", "energy", "momentum", "activity"
+// "position", "velocity", "energy", "momentum", "activity", "difference"
+std::string_view chartKey(ChartKind kind);
 std::optional<ChartKind> parseChartKind(std::string_view key);
 // Whether the chart means something for the scene: momentum needs two balls or more
-// (one ball's momentum only shows gravity and the walls), activity needs many.
+// (one ball's momentum only shows gravity and the walls), activity needs many. The
+// difference chart applies to every scene but is drawn only beside a comparison run or
+// a closed form (differenceDrawable).
 bool chartApplies(ChartKind kind, SceneId scene);
+bool differenceDrawable(bool comparing, bool closedForm);
 
 // What the energy and momentum charts are measured with (ConservationMeter's answers).
 struct ChartUnits {
@@ -56,9 +65,10 @@ struct ReferenceMotion {
 class MotionChart : public QChart {
     Q_OBJECT
 public:
-    explicit MotionChart(ChartKind kind);
+    explicit MotionChart(ChartKind kind, const ChartLook& look = ChartLook::window());
 
     ChartKind kind() const { return kind_; }
+    const ChartLook& look() const { return look_; }
     // Axes, titles and units for `scene`, ball `ball` (0-based); clears the lines and the
     // closed form (set the new run's with setReference).
     void configure(const SceneInfo& scene, int ball, const ChartUnits& units = {});
@@ -76,11 +86,18 @@ public:
     void setComparison(const QString& mainName, const QString& compareName);
     void showComparisonTrack(const MotionTrack& track, int columns);
     bool hasComparison() const { return !compareName_.isEmpty(); }
+    // A caption under the legend (how the figure was made); empty: none.
+    void setCaption(const QString& caption);
+    // The legend as drawn: one entry per line of the run, then one per family of lines
+    // (the run, the closed form, the comparison) when there are several, each with the pen
+    // it stands for.
+    const std::vector<LegendEntry>& legendEntries() const { return legend_->entries(); }
+    ChartLegend* legendItem() const { return legend_; }
 
     // The lines drawn. Position, velocity: the axes, {1} for a vertical-only scene, {0,
     // 1, 2} otherwise; momentum {0, 1, 2} (x, y, z). Energy: 0 kinetic, 1 potential,
     // 2 total, 3 spring (when the spring floor is on). Activity: 0 moving balls (left
-    // axis), 1 impacts per unit of time (right axis).
+    // axis), 1 impacts per unit of time (right axis). Difference: the position axes.
     const std::vector<int>& shownAxes() const { return shownAxes_; }
     QValueAxis* valueAxis() const { return valueAxis_; }
     QValueAxis* rateAxis() const { return rateAxis_; } // activity only, else nullptr
@@ -89,8 +106,22 @@ public:
     QLineSeries* comparisonLine(int index) const { return overlays_[static_cast<std::size_t>(index)]; }
     QLineSeries* cursorLine() const { return cursor_; }
 
+protected:
+    void resizeEvent(QGraphicsSceneResizeEvent* event) override;
+
 private:
     void applyFonts();
+    void applyPens();
+    void restyleRunLines();
+    // The drawn legend follows what a theme or lecture mode sets on QLegend (hidden: its
+    // font and label colour) and on the lines' pens.
+    void followLegendStyle();
+    void updateLegend();
+    void placeLegend();
+    // The difference chart: the run's positions at up to 4 samples a column, then minus
+    // the comparison (interpolated at the same times) or the closed form.
+    void keepDifferenceRun(const MotionTrack& track, int columns);
+    void drawDifference(const MotionTrack* comparison);
     void applyTimeRange();
     void updateValueRange(double lo, double hi);
     void updateRateRange(double hi);
@@ -103,6 +134,8 @@ private:
     double component(const Kinematics& k, int axis) const;
 
     ChartKind kind_;
+    ChartLook look_;
+    ChartLegend* legend_;
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
     QValueAxis* rateAxis_ = nullptr;
@@ -110,7 +143,7 @@ private:
     std::array<QLineSeries*, 3> references_{};
     std::array<QLineSeries*, 4> overlays_{};
     std::array<QString, 4> baseNames_;
-    QString mainName_, compareName_;
+    QString mainName_, compareName_, who_;
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
     double tEnd_ = 1.0;
@@ -121,6 +154,8 @@ private:
     bool haveRange_ = false;
     double rateHi_ = 0.0;
     std::vector<double> rate_; // impacts per unit of time, from the last track shown
+    std::vector<double> diffT_;
+    std::array<std::vector<double>, 3> diffRun_;
 };
 
 } // namespace ab::ui

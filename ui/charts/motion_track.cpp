@@ -2,7 +2,6 @@
 #include "motion_track.h"
 
 #include <algorithm>
-#include <charconv>
 #include <stdexcept>
 
 namespace ab::ui {
@@ -94,65 +93,6 @@ std::vector<double> impactRate(const MotionTrack& track, double window)
     if (rate.size() > 1)
         rate[0] = rate[1]; // no interval ends at the start: show the first one's rate
     return rate;
-}
-
-void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball, const MotionTrack* compare)
-{
-    static const char* names[3] = {"x", "y", "z"};
-    const std::vector<int> shown = axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
-    // The columns after t and ball, once for the run and once, prefixed, for the comparison.
-    auto header = [&](std::string_view prefix) {
-        for (int a : shown)
-            out << "," << prefix << names[a];
-        for (int a : shown)
-            out << "," << prefix << "v" << names[a];
-        for (const char* c : {"energy_total", "energy_kinetic", "energy_potential", "energy_spring", "momentum_x",
-                              "momentum_y", "momentum_z", "moving", "impacts"})
-            out << "," << prefix << c;
-    };
-    out << "t,ball";
-    header("");
-    if (compare) {
-        out << ",compare_t";
-        header("compare_");
-    }
-    out << "\n";
-    char number[32];
-    // Shortest round-trip form, independent of the locale (std::to_chars never reads it).
-    auto text = [&](auto x) { return std::string_view(number, std::to_chars(number, number + sizeof number, x).ptr); };
-    auto put = [&](auto x) { out << "," << text(x); };
-    auto row = [&](const MotionTrack& m, std::size_t i) {
-        for (int a : shown)
-            put(m.p(a)[i]);
-        for (int a : shown)
-            put(m.v(a)[i]);
-        put(m.energy()[i]);
-        put(m.kinetic()[i]);
-        put(m.potential()[i]);
-        put(m.spring()[i]);
-        for (int a = 0; a < 3; ++a)
-            put(m.momentum(a)[i]);
-        put(static_cast<long long>(m.moving()[i]));
-        put(m.impacts()[i]);
-    };
-    const std::size_t compareColumns = 1 + 2 * shown.size() + 9;
-    std::size_t j = 0; // the comparison's last sample at or before the row's time
-    for (std::size_t i = 0; i < track.size(); ++i) {
-        out << text(track.t()[i]) << "," << ball;
-        row(track, i);
-        if (compare) {
-            const double t = track.t()[i];
-            while (j + 1 < compare->size() && compare->t()[j + 1] <= t)
-                ++j;
-            if (j < compare->size() && compare->t()[j] <= t) {
-                put(compare->t()[j]);
-                row(*compare, j);
-            } else {
-                out << std::string(compareColumns, ','); // nothing recorded yet at this time
-            }
-        }
-        out << "\n";
-    }
 }
 
 } // namespace ab::ui

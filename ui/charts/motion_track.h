@@ -11,7 +11,6 @@
 
 #include <array>
 #include <cstddef>
-#include <ostream>
 #include <vector>
 
 namespace ab::ui {
@@ -65,17 +64,5 @@ private:
 // count, not a derivative, so it is exact for any stride: impacts(i) - impacts(j) over
 // t(i) - t(j).
 std::vector<double> impactRate(const MotionTrack& track, double window);
-
-// The track as CSV, every kept sample at full precision: `t,ball,` then the position and
-// velocity of the axes shown (`axes` 1: y alone; 3: x, y, z), then `energy_total`,
-// `energy_kinetic`, `energy_potential`, `energy_spring` (of all balls, per unit mass or
-// with the physical model's masses), `momentum_x`, `_y`, `_z`, `moving` (balls) and
-// `impacts` (since the start).
-// `ball` is the index the trajectory CSV uses (0 for the first ball). With `compare`
-// (a comparison run's track) every row gains `compare_t` and the same columns prefixed
-// `compare_`, from the comparison's last sample at or before the row's time (the same
-// time when both runs share their step; empty before its first sample).
-void writeMotionCsv(std::ostream& out, const MotionTrack& track, int axes, int ball,
-                    const MotionTrack* compare = nullptr);
 
 } // namespace ab::ui

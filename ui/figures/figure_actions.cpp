@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "figure_actions.h"
 
+#include "ui/export_options_dialog.h"
+
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -51,8 +53,10 @@ FigureDialog::FigureDialog(FigureData data, QWidget* parent) : QDialog(parent), 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     QPushButton* png = buttons->addButton(tr("Export PNG..."), QDialogButtonBox::ActionRole);
     QPushButton* svg = buttons->addButton(tr("Export SVG..."), QDialogButtonBox::ActionRole);
+    QPushButton* pdf = buttons->addButton(tr("Export PDF..."), QDialogButtonBox::ActionRole);
     connect(png, &QPushButton::clicked, this, [this] { exportInteractively("png"); });
     connect(svg, &QPushButton::clicked, this, [this] { exportInteractively("svg"); });
+    connect(pdf, &QPushButton::clicked, this, [this] { exportInteractively("pdf"); });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(canvas_, 1);
@@ -65,17 +69,28 @@ void FigureDialog::exportTo(const QString& path) const
     exportFigure(data_, path, QSize(1200, 900));
 }
 
+void FigureDialog::exportTo(const QString& path, const FigureOptions& options) const
+{
+    exportFigure(data_, path, options);
+}
+
 void FigureDialog::exportInteractively(const QString& suffix)
 {
     const QString name = QStringLiteral("figure-%1.%2").arg(numberOf(data_.figure), suffix);
-    const QString filter = suffix == "svg" ? tr("SVG image (*.svg)") : tr("PNG image (*.png)");
+    const QString filter = suffix == "svg"   ? tr("SVG image (*.svg)")
+                           : suffix == "pdf" ? tr("PDF document (*.pdf)")
+                                             : tr("PNG image (*.png)");
     QString path = QFileDialog::getSaveFileName(this, tr("Export figure"), QDir::currentPath() + "/" + name, filter);
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += "." + suffix;
+    ExportOptionsDialog options(ChartExportChoice{FigureOptions{FigureSize::reportFull(), std::nullopt}},
+                                QFileInfo(path).suffix().toLower() == "png", this, false);
+    if (options.exec() != QDialog::Accepted)
+        return;
     try {
-        exportTo(path);
+        exportTo(path, options.choice().options);
     } catch (const InputError& e) {
         QMessageBox::warning(this, tr("Export failed"), QString::fromUtf8(e.what()));
     }

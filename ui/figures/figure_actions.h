@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Figures menu: each of the report's figures (ui/figures/report_figures.h) in a
-// dialog of its own that redraws at any size and exports PNG or SVG.
+// dialog of its own that redraws at any size and exports PNG, SVG or PDF at a size for
+// where it goes (a report's column or full width, a slide, a custom size).
 #pragma once
 
 #include "report_figures.h"
@@ -18,8 +19,9 @@ public:
     FigureDialog(FigureData data, QWidget* parent = nullptr);
 
     const FigureData& data() const { return data_; }
-    // Throws InputError naming the path and the reason.
+    // Throws InputError naming the path and the reason. Without options: 1200 x 900 px.
     void exportTo(const QString& path) const;
+    void exportTo(const QString& path, const FigureOptions& options) const;
 
 private:
     void exportInteractively(const QString& suffix);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "report_figures.h"
 
+#include "ui/charts/chart_export.h"
+
 #include "core/io/atomic_file.h"
 #include "ui/charts/nice_ticks.h"
 #include "ui/charts/scene_layout.h"
@@ -381,40 +383,6 @@ void paintTitleAndCaption(QPainter& p, const QRectF& area, const FigureData& d, 
     body = area.adjusted(0.5 * h, 0.5 * h, -0.5 * h, -3.6 * h);
 }
 
-// Writes an image file whole or not at all: PNG or SVG by the extension.
-void writeImage(const QString& path, QSize size, const QString& title,
-                const std::function<void(QPainter&, const QRectF&)>& paint)
-{
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != "png" && suffix != "svg")
-        throw InputError(path.toStdString() + ": unknown image type '" + suffix.toStdString() + "' (use .png or .svg)");
-    checkWritable(path.toStdString());
-    // Encoded in memory, then written through the one output path (core/io/atomic_file.h).
-    QByteArray bytes;
-    QBuffer file(&bytes);
-    file.open(QIODevice::WriteOnly);
-    const QRectF area(QPointF(0, 0), QSizeF(size));
-    if (suffix == "png") {
-        QImage image(size, QImage::Format_ARGB32_Premultiplied);
-        QPainter painter(&image);
-        paint(painter, area);
-        painter.end();
-        if (!image.save(&file, "PNG"))
-            throw InputError(path.toStdString() + ": PNG encoding failed");
-    } else {
-        QSvgGenerator svg;
-        svg.setOutputDevice(&file);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(title);
-        svg.setDescription(QStringLiteral("Amazeballs: the report's figure"));
-        QPainter painter(&svg);
-        paint(painter, area);
-        painter.end();
-    }
-    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
-}
-
 } // namespace
 
 const std::vector<ReportFigure>& allReportFigures()
@@ -484,13 +452,13 @@ FigureData computeFigure(ReportFigure figure)
     return d;
 }
 
-void paintFigure(QPainter& painter, const QRectF& area, const FigureData& data)
+void paintFigure(QPainter& painter, const QRectF& area, const FigureData& data, int textPx)
 {
     painter.save();
     painter.fillRect(area, Qt::white);
     painter.setRenderHint(QPainter::Antialiasing);
     QFont font = painter.font();
-    font.setPixelSize(std::max(11, int(std::min(area.height(), area.width()) / 55.0)));
+    font.setPixelSize(textPx > 0 ? textPx : std::max(11, int(std::min(area.height(), area.width()) / 55.0)));
     painter.setFont(font);
     QRectF body;
     paintTitleAndCaption(painter, area, data, body);
@@ -519,8 +487,18 @@ QImage renderFigure(const FigureData& data, QSize size)
 
 void exportFigure(const FigureData& data, const QString& path, QSize size)
 {
-    writeImage(path, size, figureCaption(data.figure),
-               [&](QPainter& p, const QRectF& area) { paintFigure(p, area, data); });
+    const FigureOptions options{pixelFigureSize(size.width(), size.height()), int(kSceneDpi)};
+    writeFigureFile(path, options, figureCaption(data.figure),
+                    [&](QPainter& p, const QRectF& area) { paintFigure(p, area, data); });
+}
+
+void exportFigure(const FigureData& data, const QString& path, const FigureOptions& options)
+{
+    // Text in points of the final size: 8 pt in print, 16 pt on a slide (scene units
+    // are 1/144 inch, two to the point).
+    const int textPx = int(std::lround((options.size.slide ? 16.0 : 8.0) * kSceneDpi / 72.0));
+    writeFigureFile(path, options, figureCaption(data.figure),
+                    [&](QPainter& p, const QRectF& area) { paintFigure(p, area, data, textPx); });
 }
 
 } // namespace ab::ui

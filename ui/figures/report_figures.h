@@ -5,10 +5,11 @@
 //   2.7  stage 2, velocity along x, y and z against time (three panels);
 //   3.1  stage 4, the WebGL box with 200 balls (shaded circles seen in perspective).
 // Everything is painted with QPainter (no Qt Charts, no OpenGL), so the window, the
-// command line and the tests draw the same picture on any platform, as PNG or SVG.
+// command line and the tests draw the same picture on any platform, as PNG, SVG or PDF.
 #pragma once
 
 #include "core/simulation.h"
+#include "ui/charts/figure_size.h"
 
 #include <QImage>
 #include <QRectF>
@@ -46,10 +47,13 @@ struct FigureData {
 // Runs the report model with the report's constants (Figure 3.1: with its 200 balls).
 FigureData computeFigure(ReportFigure figure);
 
-void paintFigure(QPainter& painter, const QRectF& area, const FigureData& data);
+// Text `textPx` scene units high (0: scaled to the area, for the window's dialog).
+void paintFigure(QPainter& painter, const QRectF& area, const FigureData& data, int textPx = 0);
 QImage renderFigure(const FigureData& data, QSize size);
 // Writes the figure to `path` (.png or .svg) whole or not at all; throws InputError
 // naming the path and the reason.
 void exportFigure(const FigureData& data, const QString& path, QSize size = QSize(1200, 900));
+// At a size for where the figure goes, as PNG, SVG or PDF (ui/charts/figure_size.h).
+void exportFigure(const FigureData& data, const QString& path, const FigureOptions& options);
 
 } // namespace ab::ui

@@ -96,7 +96,8 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     }
     applies_.fill(true);
     wanted_.fill(true);
-    splitter->setSizes({300, 300, 260, 220, 220});
+    available_.fill(true);
+    splitter->setSizes({300, 300, 260, 220, 220, 220});
     // Up to five charts: when the window is too short for all of them at a readable
     // height they scroll, rather than shrink until their labels are cut.
     auto* scroll = new QScrollArea;
@@ -123,12 +124,27 @@ void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double t
     ballCount_->setText(tr("of %1").arg(balls));
     for (ChartKind kind : allChartKinds()) {
         const std::size_t i = slot(kind);
-        if (applies_[i])
+        if (available_[i])
             wanted_[i] = !views_[i]->isHidden(); // the wish, as the View menu or a preset left it
         applies_[i] = chartApplies(kind, scene.id);
-        views_[i]->setHidden(!(wanted_[i] && applies_[i]));
         charts_[i]->configure(scene, ball, units);
         charts_[i]->setTimeSpan(tEnd);
+    }
+    applyVisibility();
+}
+
+bool ChartPanel::available(std::size_t i) const
+{
+    return applies_[i] && (i != slot(ChartKind::Difference) || differenceDrawable(comparing_, closedForm_));
+}
+
+void ChartPanel::applyVisibility()
+{
+    for (std::size_t i = 0; i < kinds; ++i) {
+        if (available_[i])
+            wanted_[i] = !views_[i]->isHidden();
+        available_[i] = available(i);
+        views_[i]->setHidden(!(wanted_[i] && available_[i]));
     }
     paginate();
 }
@@ -137,14 +153,14 @@ void ChartPanel::setChartShown(ChartKind kind, bool on)
 {
     const std::size_t i = slot(kind);
     wanted_[i] = on;
-    views_[i]->setHidden(!(on && applies_[i]));
+    views_[i]->setHidden(!(on && available_[i]));
     paginate();
 }
 
 bool ChartPanel::chartShown(ChartKind kind) const
 {
     const std::size_t i = slot(kind);
-    return applies_[i] ? !views_[i]->isHidden() : wanted_[i];
+    return available_[i] ? !views_[i]->isHidden() : wanted_[i];
 }
 
 void ChartPanel::showTrack(const MotionTrack& track)
@@ -163,12 +179,16 @@ void ChartPanel::setReference(const ReferenceMotion* reference)
 {
     for (MotionChart* c : charts_)
         c->setReference(reference);
+    closedForm_ = reference != nullptr;
+    applyVisibility();
 }
 
 void ChartPanel::setComparison(const QString& mainName, const QString& compareName)
 {
     for (MotionChart* c : charts_)
         c->setComparison(mainName, compareName);
+    comparing_ = !compareName.isEmpty();
+    applyVisibility();
 }
 
 void ChartPanel::showComparisonTrack(const MotionTrack& track)

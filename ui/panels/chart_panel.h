@@ -48,7 +48,7 @@ public:
     // panel over several frames: the track, the comparison's (when not null) and the
     // cursor of slot `slot` in [0, kSlots). False for a slot whose chart is hidden, which
     // is left alone.
-    static constexpr std::size_t kSlots = 5;
+    static constexpr std::size_t kSlots = 6;
     bool refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
                      std::optional<double> cursor);
 
@@ -85,6 +85,13 @@ private:
     static constexpr std::size_t kinds = kSlots;
     // How many points a track is thinned to for the chart in `slot`.
     int columns(std::size_t slot) const;
+    // Whether the chart in `slot` can be drawn now (the difference chart needs a
+    // comparison or a closed form), and the views shown as the wishes and that say.
+    bool available(std::size_t slot) const;
+    void applyVisibility();
+    std::array<bool, kinds> available_{};
+    bool comparing_ = false;
+    bool closedForm_ = false;
     std::array<MotionChart*, kinds> charts_{};
     std::array<QChartView*, kinds> views_{};
     std::array<QWidget*, kinds> holders_{}; // each view in a holder: the page hides the holder

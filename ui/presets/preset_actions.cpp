@@ -85,6 +85,8 @@ QString chartName(ChartKind kind)
         return PresetActions::tr("Momentum (two or more balls)");
     case ChartKind::Activity:
         return PresetActions::tr("Moving balls and impacts (many balls)");
+    case ChartKind::Difference:
+        return PresetActions::tr("Difference between the runs (with a comparison or a closed form)");
     }
     return QString::fromLatin1(chartKey(kind).data()); // a chart added later, by its key
 }

@@ -249,6 +249,11 @@ void SceneRenderer::useBallProgram(const RenderInputs& in, int selected, bool gh
     ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
     ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
     ballProgram_->setUniformValue("ghost", ghosts ? 1 : 0);
+    if (ghosts) // a little larger than the ball: a ghost where the ball is still shows, as a ring
+    {
+        ballProgram_->setUniformValue("radius", in.radius * 1.3f);
+        ballProgram_->setUniformValue("minPixels", in.minPixels * 1.3f);
+    }
 }
 
 void SceneRenderer::drawFlat(const RenderInputs& in)

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+#include "chart_style.h"
+
+#include "motion_chart.h"
+
+#include <algorithm>
+
+namespace ab::ui {
+
+namespace {
+
+// x, y, z in the colours of the 3D view's axis triad.
+const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
+// Kinetic, potential, total, spring; and the activity chart's two lines.
+const QColor energyColours[4] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
+                                 QColor(0x8c, 0x56, 0x4b)};
+const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
+// The comparison's family: each colour mixed half and half with a dark violet, so that
+// its lines are darker and of another hue than the run's they lie on.
+const QColor comparisonTint(0x4b, 0x00, 0x82);
+
+QColor mix(const QColor& a, const QColor& b, double w)
+{
+    return QColor::fromRgbF(float(a.redF() * (1 - w) + b.redF() * w), float(a.greenF() * (1 - w) + b.greenF() * w),
+                            float(a.blueF() * (1 - w) + b.blueF() * w));
+}
+
+QColor baseColour(ChartKind kind, int line)
+{
+    switch (kind) {
+    case ChartKind::Energy:
+        return energyColours[std::clamp(line, 0, 3)];
+    case ChartKind::Activity:
+        return activityColours[std::clamp(line, 0, 1)];
+    default:
+        return axisColours[std::clamp(line, 0, 2)];
+    }
+}
+
+} // namespace
+
+ChartLook ChartLook::window()
+{
+    return ChartLook{};
+}
+
+ChartLook ChartLook::print(double pxPerPt)
+{
+    return ChartLook{true, pxPerPt, 8.0, 9.5, 7.5, 1.0};
+}
+
+ChartLook ChartLook::slide(double pxPerPt)
+{
+    return ChartLook{true, pxPerPt, 16.0, 20.0, 14.0, 2.5};
+}
+
+QFont ChartLook::font(const QFont& base, double pt, bool bold) const
+{
+    QFont f = base;
+    // A figure's text is laid out in scene units (pxPerPt to the point of the final
+    // size), so that it comes out at `pt` whatever the device's resolution.
+    if (figure)
+        f.setPixelSize(std::max(1, int(px(pt) + 0.5)));
+    else
+        f.setPointSizeF(pt);
+    f.setBold(bold);
+    return f;
+}
+
+QColor lineColour(ChartKind kind, int line, LineFamily family)
+{
+    const QColor base = baseColour(kind, line);
+    switch (family) {
+    case LineFamily::Run:
+        return base;
+    case LineFamily::ClosedForm:
+        return base.darker(130);
+    case LineFamily::Comparison:
+        return mix(base, comparisonTint, 0.5);
+    }
+    return base;
+}
+
+QPen linePen(ChartKind kind, int line, int order, LineFamily family, const ChartLook& look)
+{
+    // The run's lines differ in style too (solid, dash-dot, dash-dot-dot): told apart
+    // in greyscale. The closed form is dashed, the comparison dotted.
+    static const Qt::PenStyle runStyles[3] = {Qt::SolidLine, Qt::DashDotLine, Qt::DashDotDotLine};
+    const bool total = kind == ChartKind::Energy && line == 2;
+    double width = look.px(look.linePt);
+    Qt::PenStyle style = Qt::SolidLine;
+    switch (family) {
+    case LineFamily::Run:
+        style = total ? Qt::SolidLine : runStyles[std::clamp(order, 0, 2)];
+        width *= total ? 1.25 : 1.0;
+        break;
+    case LineFamily::ClosedForm:
+        style = Qt::DashLine;
+        width *= 0.85;
+        break;
+    case LineFamily::Comparison:
+        style = Qt::DotLine;
+        width *= 1.1;
+        break;
+    }
+    QPen pen(lineColour(kind, line, family), width, style);
+    pen.setCapStyle(Qt::FlatCap);
+    return pen;
+}
+
+QPen cursorPen(const ChartLook& look)
+{
+    // A bluish grey of its own (no other line or text is drawn in it), 0.72 of a run line.
+    return QPen(QColor(0x60, 0x60, 0x66), look.px(0.72 * look.linePt));
+}
+
+} // namespace ab::ui

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// The motion charts' legend and caption (chart_legend.h), in a band below the time axis:
+// which entries the chart's lines get, and the chart's margin that makes room for them.
+#include "motion_chart.h"
+
+#include <QGraphicsSceneResizeEvent>
+#include <QLegend>
+#include <QLineSeries>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ab::ui {
+
+void MotionChart::followLegendStyle()
+{
+    connect(legend(), &QLegend::fontChanged, this, [this](const QFont& f) {
+        QFont caption = f;
+        const double ratio = look_.captionPt / look_.textPt;
+        if (f.pointSizeF() > 0)
+            caption.setPointSizeF(f.pointSizeF() * ratio);
+        else
+            caption.setPixelSize(std::max(1, int(f.pixelSize() * ratio + 0.5)));
+        legend_->setFonts(f, caption);
+        placeLegend();
+    });
+    connect(legend(), &QLegend::labelColorChanged, this, [this](const QColor& c) {
+        legend_->setTextColour(c);
+        updateLegend();
+    });
+    for (int a = 0; a < 4; ++a)
+        for (QLineSeries* s : {lines_[a], overlays_[a], a < 3 ? references_[a] : nullptr})
+            if (s)
+                connect(s, &QXYSeries::penChanged, this, [this] { updateLegend(); });
+}
+
+void MotionChart::resizeEvent(QGraphicsSceneResizeEvent* event)
+{
+    QChart::resizeEvent(event);
+    placeLegend();
+}
+
+void MotionChart::setCaption(const QString& caption)
+{
+    legend_->setCaption(caption);
+    placeLegend();
+}
+
+void MotionChart::placeLegend()
+{
+    // The legend and the caption take a band at the bottom, below the time axis: the
+    // chart's bottom margin is made as tall as they are.
+    const double side = look_.figure ? look_.px(4.0) : 6.0;
+    const double width = std::max(size().width() - 2.0 * side, 10.0);
+    const double h = legend_->layout(width);
+    const double gap = look_.figure ? look_.px(3.0) : 3.0;
+    const int edge = look_.figure ? int(look_.px(3.0)) : 4;
+    setMargins(QMargins(edge, edge, edge + (look_.figure ? 0 : 4), int(std::ceil(h + 2.0 * gap))));
+    legend_->setPos(side, size().height() - h - gap);
+}
+
+void MotionChart::updateLegend()
+{
+    const bool comparing = !compareName_.isEmpty() && kind_ != ChartKind::Difference;
+    const bool closedForm = reference_ && (kind_ == ChartKind::Position || kind_ == ChartKind::Velocity);
+    std::vector<LegendEntry> entries;
+    if (shownAxes_.empty()) { // not configured yet
+        legend_->setEntries({});
+        return;
+    }
+    if (shownAxes_.size() == 1 && (comparing || closedForm)) {
+        // One line a run: each entry names its run, in its own pen.
+        const int a = shownAxes_.front();
+        entries.push_back({lines_[a]->pen(), lines_[a]->name()});
+        if (closedForm)
+            entries.push_back({references_[a]->pen(), references_[a]->name()});
+        if (comparing)
+            entries.push_back({overlays_[a]->pen(), overlays_[a]->name()});
+    } else {
+        // One entry a line of the run, then one a family: its style in a neutral ink.
+        if (comparing)
+            entries.push_back({QPen(Qt::NoPen), mainName_ + ":"});
+        for (int a : shownAxes_)
+            entries.push_back({lines_[a]->pen(), baseNames_[a]});
+        // The closed form's entry in the text's colour (it stands for every axis); the
+        // comparison's in its first line's, as a theme shows it (its own violet family).
+        auto family = [&](QPen pen, LineFamily f, const QString& name) {
+            if (f == LineFamily::ClosedForm)
+                pen.setColor(legend_->textColour());
+            entries.push_back({pen, name});
+        };
+        if (closedForm)
+            family(references_[shownAxes_.front()]->pen(), LineFamily::ClosedForm, reference_->name);
+        if (comparing)
+            family(overlays_[shownAxes_.front()]->pen(), LineFamily::Comparison, compareName_);
+    }
+    if (kind_ == ChartKind::Difference) {
+        // What is subtracted from what, as a legend entry (it wraps; a title would be cut).
+        const QString run = mainName_.isEmpty() ? tr("simulation") : mainName_;
+        const QString other = !compareName_.isEmpty() ? compareName_ : reference_ ? reference_->name : QString();
+        entries.push_back({QPen(Qt::NoPen), other.isEmpty() ? tr("(no comparison or closed form to subtract)")
+                                                            : tr("= %1 minus %2").arg(run, other)});
+    }
+    legend_->setEntries(std::move(entries));
+    placeLegend();
+}
+
+} // namespace ab::ui
