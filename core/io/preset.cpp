@@ -481,7 +481,7 @@ void savePreset(const std::filesystem::path& path, const Preset& preset)
 
 const std::vector<std::string>& presetChartKeys()
 {
-    static const std::vector<std::string> keys{"position", "velocity", "energy", "momentum", "activity"};
+    static const std::vector<std::string> keys{"position", "velocity", "energy", "momentum", "activity", "difference"};
     return keys;
 }
 

@@ -117,7 +117,7 @@ std::size_t checkHeader(const std::string& line, const std::string& where)
 {
     static const char* const names[11] = {"t", "ball", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz"};
     const std::vector<std::string_view> cells = cellsOf(line);
-    const std::size_t columns = cells.size() > 8 ? 11 : 8;
+    const std::size_t columns = cells.size() > 8 && cells[8] == "wx" ? 11 : 8;
     for (std::size_t c = 0; c < cells.size(); ++c)
         if (c >= columns || cells[c] != names[c])
             throw InputError(where + ": header column " + std::to_string(c + 1) + " is '" + printableInput(cells[c]) +

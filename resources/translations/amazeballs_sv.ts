@@ -531,6 +531,10 @@
         <source>Activity</source>
         <translation>Aktivitet</translation>
     </message>
+    <message>
+        <source>Difference</source>
+        <translation>Skillnad</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ExportOptionsDialog</name>

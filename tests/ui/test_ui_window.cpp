@@ -152,9 +152,9 @@ private slots:
         QTest::newRow("not a number") << int(SceneId::Bounce1d) << "h0"
                                       << "1e"
                                       << "h0: '1e' is not a number";
-        QTest::newRow("not finite") << int(SceneId::Box3d) << "g"
-                                    << "1e999"
-                                    << "g: '1e999' is not a finite number";
+        QTest::newRow("beyond a double") << int(SceneId::Box3d) << "g"
+                                         << "1e999"
+                                         << "g: '1e999' is too large for a double";
         QTest::newRow("outside the box") << int(SceneId::Box3d) << "p0"
                                          << "400,5,5"
                                          << "outside the box";

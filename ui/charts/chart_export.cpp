@@ -72,8 +72,8 @@ void writePng(QIODevice& file, const QString& path, const FigureOptions& options
     const QSize pixels = options.pngPixels();
     QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
-        throw InputError(pathText(path) + ": not enough memory for a " + std::to_string(pixels.width()) +
-                         "x" + std::to_string(pixels.height()) + " image");
+        throw InputError(pathText(path) + ": not enough memory for a " + std::to_string(pixels.width()) + "x" +
+                         std::to_string(pixels.height()) + " image");
     image.fill(Qt::white);
     const int dotsPerMetre = int(options.effectiveDpi() / 0.0254 + 0.5);
     image.setDotsPerMeterX(dotsPerMetre);
@@ -90,7 +90,7 @@ void writePng(QIODevice& file, const QString& path, const FigureOptions& options
         throw InputError(pathText(path) + ": PNG encoding failed");
 }
 
-void writeSvg(QIODevice& file, const QString& path, const FigureOptions& options, const QString& title, const ScenePainter& paint)
+void writeSvg(QIODevice& file, const FigureOptions& options, const QString& title, const ScenePainter& paint)
 {
     // The drawing in scene units (the viewBox), declared 1/144 inch each: the width and
     // height attributes then carry the physical size in millimetres (given in tenths of
@@ -108,7 +108,8 @@ void writeSvg(QIODevice& file, const QString& path, const FigureOptions& options
     painter.end();
 }
 
-void writePdf(QIODevice& file, const QString& path, const FigureOptions& options, const QString& title, const ScenePainter& paint)
+void writePdf(QIODevice& file, const QString& path, const FigureOptions& options, const QString& title,
+              const ScenePainter& paint)
 {
     const QSizeF mm = options.millimetres();
     QPdfWriter pdf(&file);
@@ -163,7 +164,7 @@ void writeFigureFile(const QString& path, const FigureOptions& options, const QS
     if (suffix == "png")
         writePng(file, path, options, paint);
     else if (suffix == "svg")
-        writeSvg(file, path, options, title, paint);
+        writeSvg(file, options, title, paint);
     else
         writePdf(file, path, options, title, paint);
     file.close();

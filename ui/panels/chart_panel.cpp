@@ -319,6 +319,8 @@ QString ChartPanel::chartName(ChartKind kind)
         return tr("Momentum");
     case ChartKind::Activity:
         return tr("Activity");
+    case ChartKind::Difference:
+        return tr("Difference");
     }
     return {};
 }

@@ -15,6 +15,8 @@
 #include <QPainter>
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 namespace ab::ui {
 
@@ -219,8 +221,10 @@ AnimationStats exportAnimation(const AnimationRequest& request, const std::strin
     const bool gif = request.video.format == video::VideoFormat::Gif;
     const long long samples = gif ? std::min<long long>(kPaletteSamples, plan.frames) : 0;
     Work work{progress, samples + plan.frames, 0};
-    // Written through core/io/atomic_file.h: a temporary file beside `path`, renamed at the end.
-    writeFileAtomically(path, [&](std::ostream& out) {
+    // Encoded in memory (the MP4 muxer seeks back to write its index), then written through
+    // core/io/atomic_file.h: whole or not at all, devices and links respected.
+    std::stringstream out(std::ios::in | std::ios::out | std::ios::binary);
+    {
         video::VideoEncoder encoder(request.video, out);
         if (samples > 0)
             samplePalette(request, plan, samples, encoder, work, stats);
@@ -242,7 +246,9 @@ AnimationStats exportAnimation(const AnimationRequest& request, const std::strin
         stats.simulate += frames.simulateSeconds();
         stats.render += frames.renderSeconds();
         stats.warning = frames.warning();
-    });
+    }
+    const std::string bytes = std::move(out).str();
+    writeFileAtomically(path, std::string_view(bytes));
     stats.total = seconds(total);
     return stats;
 }
