@@ -241,7 +241,7 @@ Arranged arrange(SceneId scene, bool lecture, Language language)
     settle();
     for (int i = 0; i < 200; ++i)
         w.controller().stepOnce();
-    a.ran = QTest::qWaitFor([&] { return w.controller().status().steps >= 200; });
+    a.ran = QTest::qWaitFor([&] { return w.controller().status().steps >= 200; }, 60000); // a loaded machine
     w.controller().poll();
     settle();
     a.window = &w;

@@ -9,7 +9,6 @@
 
 #ifdef __linux__
 #include <pthread.h>
-#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #endif
@@ -24,15 +23,14 @@ bool finiteState(const State& s)
 }
 
 // The window's drawing comes first: on a busy machine a long step (10,000 balls) must
-// not take the core the window and software OpenGL need. On Linux the stepping thread is
-// SCHED_IDLE (it runs on what the drawing leaves; any thread may lower itself to it),
-// or nice 8 where that is refused; elsewhere it keeps the default priority.
+// not take the core the window and software OpenGL need. On Linux the stepping thread
+// runs at nice 8 (about a tenth of a normal thread's share when both want the core). Not
+// SCHED_IDLE: that starves the run outright whenever anything else is busy (a compile
+// in the background froze the window's run at t = 0); elsewhere it keeps the default.
 void lowerThisThreadsPriority()
 {
 #ifdef __linux__
-    sched_param idle{};
-    if (pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle) != 0)
-        (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 8);
     pthread_setname_np(pthread_self(), "ab-stepper"); // named for profilers and --measure-frames
 #endif
 }

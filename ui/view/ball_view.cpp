@@ -246,8 +246,9 @@ void BallView::paintOverlay(QPainter& p)
     QFont font = p.font();
     font.setPointSizeF(10.0 * scale_);
     paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font);
-    if (!ghostLegend_.isEmpty()) // top right, in the ghosts' violet: clear of the axis labels on the left
-        drawHaloText(p, QPointF(width() - 12, 20 * scale_), ghostLegend_, QColor(0x4b, 0x00, 0x82), Qt::AlignRight);
+    if (!ghostLegend_.isEmpty()) // bottom right, in the ghosts' violet: clear of the axis labels at the top
+        drawHaloText(p, QPointF(width() - 12, height() - 40 * scale_), ghostLegend_, QColor(0x4b, 0x00, 0x82),
+                     Qt::AlignRight);
     if (!glError_.isEmpty())
         drawHaloText(p, QPointF(12, 44 * scale_), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
     if (keyFocus_)
