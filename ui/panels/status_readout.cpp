@@ -10,6 +10,7 @@
 
 #include <QLayout>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -44,9 +45,14 @@ void setColour(QLabel* label, std::optional<Shade> shade)
 // A reading keeps at least its base width, so that the bar does not jitter as digits come
 // and go, and never less than its text: the warning beside it takes the rest (lecture
 // mode's larger text included), and a reading is never cut.
+// Queued: a new minimum relays out the window at once, and the readings are shown while
+// the run's recording is locked (MainWindow::refreshReadings), which a relayout's chart
+// refresh would lock again.
 void fitText(QLabel* label)
 {
-    label->setMinimumWidth(std::max(label->property("baseWidth").toInt(), label->sizeHint().width()));
+    QTimer::singleShot(0, label, [label] {
+        label->setMinimumWidth(std::max(label->property("baseWidth").toInt(), label->sizeHint().width()));
+    });
 }
 
 } // namespace
