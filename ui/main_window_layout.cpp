@@ -99,10 +99,15 @@ void MainWindow::buildLayout()
     connect(transport_, &TransportBar::viewTimeChanged, this, &MainWindow::refresh);
     connect(charts_, &ChartPanel::ballRequested, &controller_, &RunController::selectBall);
     connect(charts_, &ChartPanel::exportRequested, this, &MainWindow::exportInteractively);
-    connect(charts_, &ChartPanel::pageChanged, this, [this] {
-        if (controller_.hasRun())
-            refreshPanels(); // the charts of the new page were not drawn while off it
-    });
+    // Queued: a page can change inside a relayout, and a relayout can come while the run's
+    // recording is locked (a reading or chart being refreshed), which refreshPanels locks.
+    connect(
+        charts_, &ChartPanel::pageChanged, this,
+        [this] {
+            if (controller_.hasRun())
+                refreshPanels(); // the charts of the new page were not drawn while off it
+        },
+        Qt::QueuedConnection);
 }
 
 QWidget* MainWindow::buildLeftPanel()

@@ -7,11 +7,15 @@
 #include <QApplication>
 #include <QFrame>
 #include <QLabel>
+
 #include <QLayout>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ab::ui {
@@ -38,6 +42,19 @@ void setColour(QLabel* label, std::optional<Shade> shade)
     label->setFont(bold);
 }
 
+// A reading keeps at least its base width, so that the bar does not jitter as digits come
+// and go, and never less than its text: the warning beside it takes the rest (lecture
+// mode's larger text included), and a reading is never cut.
+// Queued: a new minimum relays out the window at once, and the readings are shown while
+// the run's recording is locked (MainWindow::refreshReadings), which a relayout's chart
+// refresh would lock again.
+void fitText(QLabel* label)
+{
+    QTimer::singleShot(0, label, [label] {
+        label->setMinimumWidth(std::max(label->property("baseWidth").toInt(), label->sizeHint().width()));
+    });
+}
+
 } // namespace
 
 QString formatDuration(double seconds)
@@ -56,6 +73,7 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     auto label = [bar](const char* name, int width) {
         auto* l = new QLabel;
         l->setObjectName(QString::fromLatin1(name));
+        l->setProperty("baseWidth", width);
         l->setMinimumWidth(width);
         bar->addPermanentWidget(l);
         return l;
@@ -107,6 +125,8 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
     else
         energy_->setText(std::isfinite(energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit, sq, timeUnit)
                                                : tr("E/m = -"));
+    for (QLabel* reading : {time_, step_, energy_})
+        fitText(reading);
     const Message m = messageFor(s, shown, back);
     full_ = m.full;
     warning_->setText(m.headline);
@@ -222,6 +242,7 @@ void StatusReadout::showDetails()
 void StatusReadout::setFrameRate(double fps)
 {
     fps_->setText(fps < 0.0 ? tr("no 3D view") : fps == 0.0 ? tr("- fps") : tr("%1 fps").arg(fps, 0, 'f', 0));
+    fitText(fps_);
 }
 
 QString StatusReadout::warningText() const
