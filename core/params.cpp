@@ -62,13 +62,12 @@ double parseReal(std::string_view text, std::string_view what)
     double value = 0.0;
     const std::errc ec = fromWholeText(text, value);
     if (ec == std::errc::invalid_argument)
-        throw InputError(std::string(what) + ": " + quoted(text) + " is not a number");
+        throw InputError(Refusal{refusal::notANumber, {std::string(what), quoted(text)}});
     if (ec == std::errc::result_out_of_range)
-        throw InputError(std::string(what) + ": " + quoted(text) +
-                         (underflows(text) ? " is too small for a double (below 4.9e-324); write 0 or a larger value"
-                                           : " is too large for a double (above 1.8e308)"));
+        throw InputError(Refusal{underflows(text) ? refusal::tooSmallForDouble : refusal::tooLargeForDouble,
+                                 {std::string(what), quoted(text)}});
     if (!std::isfinite(value))
-        throw InputError(std::string(what) + ": " + quoted(text) + " is not a finite number");
+        throw InputError(Refusal{refusal::notFinite, {std::string(what), quoted(text)}});
     return value;
 }
 
@@ -77,9 +76,9 @@ long long parseInteger(std::string_view text, std::string_view what)
     long long value = 0;
     const std::errc ec = fromWholeText(text, value);
     if (ec == std::errc::invalid_argument)
-        throw InputError(std::string(what) + ": " + quoted(text) + " is not a whole number");
+        throw InputError(Refusal{refusal::notWhole, {std::string(what), quoted(text)}});
     if (ec == std::errc::result_out_of_range)
-        throw InputError(std::string(what) + ": " + quoted(text) + " is too large");
+        throw InputError(Refusal{refusal::wholeTooLarge, {std::string(what), quoted(text)}});
     return value;
 }
 
@@ -90,13 +89,12 @@ Eigen::Vector3d parseVector(std::string_view text, std::string_view what)
     for (int i = 0; i < 3; ++i) {
         const auto comma = rest.find(',');
         if ((i < 2) == (comma == std::string_view::npos))
-            throw InputError(std::string(what) + ": " + quoted(text) + " is not a vector x,y,z of three numbers");
+            throw InputError(Refusal{refusal::notVector, {std::string(what), quoted(text)}});
         const std::string_view part = i < 2 ? rest.substr(0, comma) : rest;
         try {
             v[i] = parseReal(part, what);
         } catch (const InputError&) {
-            throw InputError(std::string(what) + ": " + quoted(text) +
-                             " is not a vector x,y,z of three finite numbers");
+            throw InputError(Refusal{refusal::notFiniteVector, {std::string(what), quoted(text)}});
         }
         if (i < 2)
             rest = rest.substr(comma + 1);
@@ -150,25 +148,34 @@ std::string formatRange(const ParamSpec& spec)
     return std::string(spec.minExclusive ? "(" : "[") + num(spec.min) + ", " + num(spec.max) + "]";
 }
 
-std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value)
+std::optional<Refusal> checkRefusal(const ParamSpec& spec, const Eigen::Vector3d& value)
 {
     const int n = spec.kind == ParamKind::Vector ? 3 : 1;
     for (int i = 0; i < n; ++i) {
         const double x = value[i];
         if (!std::isfinite(x))
-            return spec.key + ": value is not a finite number";
+            return Refusal{refusal::valueNotFinite, {spec.key}};
         if (spec.kind == ParamKind::Integer && x != std::floor(x))
-            return spec.key + ": " + formatNumber(x) + " is not a whole number";
+            return Refusal{refusal::notWhole, {spec.key, formatNumber(x)}};
         const bool below = spec.minExclusive ? x <= spec.min : x < spec.min;
         if (below || x > spec.max) {
-            std::string component = n == 3 ? std::string(" (") + "xyz"[i] + " component)" : std::string();
             const std::string shown = spec.kind == ParamKind::Integer && std::abs(x) < 9e15
                                           ? std::to_string(static_cast<long long>(x))
                                           : formatNumber(x);
-            return spec.key + ": " + shown + component + " is outside the allowed range " + formatRange(spec) +
-                   (spec.unit == "1" || spec.unit.empty() ? std::string() : " " + spec.unit);
+            const std::string range =
+                formatRange(spec) + (spec.unit == "1" || spec.unit.empty() ? std::string() : " " + spec.unit);
+            if (n == 3)
+                return Refusal{refusal::componentOutsideRange, {spec.key, shown, std::string(1, "xyz"[i]), range}};
+            return Refusal{refusal::outsideRange, {spec.key, shown, range}};
         }
     }
+    return std::nullopt;
+}
+
+std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value)
+{
+    if (auto r = checkRefusal(spec, value))
+        return refusalMessage(*r);
     return std::nullopt;
 }
 
@@ -221,8 +228,8 @@ void ParamValues::set(std::string_view key, const Eigen::Vector3d& value)
     Eigen::Vector3d v = value;
     if (s.kind != ParamKind::Vector)
         v[1] = v[2] = 0.0;
-    if (auto error = checkValue(s, v))
-        throw InputError(*error);
+    if (auto r = checkRefusal(s, v))
+        throw InputError(std::move(*r));
     values_[*indexOf(key)] = v;
 }
 
@@ -239,9 +246,7 @@ void ParamValues::parse(std::string_view key, std::string_view text)
         constexpr long long exact = (1LL << 53) - 1;
         const long long n = parseInteger(text, s.key);
         if (n > exact || n < -exact)
-            throw InputError(s.key + ": " + quoted(text) +
-                             " is beyond 2^53 - 1 = 9007199254740991, the largest whole "
-                             "number kept exactly");
+            throw InputError(Refusal{refusal::beyondExact, {s.key, quoted(text)}});
         v[0] = static_cast<double>(n);
         break;
     }

@@ -4,6 +4,8 @@
 // the table instead of knowing names.
 #pragma once
 
+#include "input_error.h"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -14,13 +16,6 @@
 #include <vector>
 
 namespace ab {
-
-// Raised for any input a user can get wrong (a value, a name, a file). The message names
-// what was wrong and is meant to be shown as it is, on one line.
-class InputError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 enum class ParamKind { Real, Integer, Vector };
 
@@ -90,6 +85,7 @@ std::string printableInput(std::string_view text);
 
 // Checks one value against its spec without storing it; returns the error text or nothing.
 std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value);
+std::optional<Refusal> checkRefusal(const ParamSpec& spec, const Eigen::Vector3d& value); // the same, to translate
 
 // Formats a value as the user would type it back ("0.9", "12", "2,20,2"), shortest
 // representation that reads back exactly.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "export_options_dialog.h"
 
+#include "ui/i18n/core_text.h"
+
 #include "core/params.h"
 
 #include <QCheckBox>
@@ -154,7 +156,7 @@ void ExportOptionsDialog::updateSummary()
         summary_->setText(text);
         summary_->setStyleSheet(QString());
     } catch (const InputError& e) {
-        summary_->setText(QString::fromUtf8(e.what()));
+        summary_->setText(refusalText(e));
         summary_->setStyleSheet("color: #b00020;");
     }
 }

@@ -4,6 +4,7 @@
 // run in main_window_refresh.cpp and exports in main_window_export.cpp.
 #include "main_window.h"
 
+#include "charts/run_description.h"
 #include "i18n/core_text.h"
 #include "panels/parameter_panel.h"
 #include "panels/stage_navigator.h"
@@ -16,20 +17,6 @@
 #include <QStatusBar>
 
 namespace ab::ui {
-
-namespace {
-
-QString qs(const std::string& s)
-{
-    return QString::fromStdString(s);
-}
-
-QString labelOf(const RunSpec& spec)
-{
-    return qs(variantLabel(RunVariant{spec.model, spec.integrator, spec.impacts, spec.dt}));
-}
-
-} // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
@@ -81,7 +68,7 @@ std::optional<QString> MainWindow::startRun(const Setup& setup)
     try {
         controller_.setRun(setup.spec, setup.options.steps, setup.options.compare);
     } catch (const InputError& e) {
-        const QString message = QString::fromUtf8(e.what());
+        const QString message = refusalText(e);
         showError(message);
         return message;
     }
@@ -165,17 +152,19 @@ void MainWindow::runReplaced()
     const int ball = controller_.selectedBall();
     readout_->setRun(spec);
     // The comparison's lines are named after both runs; without one the names stay plain.
-    const QString compareLabel =
-        controller_.comparing() ? labelOf(controller_.comparisonEngine()->simulation().spec()) : QString();
-    charts_->setComparison(labelOf(spec), compareLabel);
+    const QString compareLabel = controller_.comparing()
+                                     ? RunDescription::runLabel(controller_.comparisonEngine()->simulation().spec())
+                                     : QString();
+    charts_->setComparison(RunDescription::runLabel(spec), compareLabel);
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
         framedScene_ = scene_;
         view_->setSelected(ball);
-        view_->setGhosts({}, compareLabel.isEmpty() ? QString()
-                                                    : tr("solid: %1, ghost: %2").arg(labelOf(spec), compareLabel));
+        view_->setGhosts({}, compareLabel.isEmpty()
+                                 ? QString()
+                                 : tr("solid: %1, ghost: %2").arg(RunDescription::runLabel(spec), compareLabel));
     }
     transport_->goLive();
     panelClock_.invalidate();

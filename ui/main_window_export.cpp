@@ -27,11 +27,6 @@ QString qs(const std::string& s)
     return QString::fromStdString(s);
 }
 
-QString labelOf(const RunSpec& spec)
-{
-    return qs(variantLabel(RunVariant{spec.model, spec.integrator, spec.impacts, spec.dt}));
-}
-
 } // namespace
 
 std::optional<ReferenceMotion> MainWindow::closedFormMotion() const
@@ -59,9 +54,9 @@ void MainWindow::exportChartTo(ChartKind kind, const QString& path, const ChartE
     recipe.ball = controller_.selectedBall();
     recipe.units = chartUnits();
     recipe.tEnd = controller_.plannedEnd();
-    recipe.runName = labelOf(sim.spec());
+    recipe.runName = RunDescription::runLabel(sim.spec());
     if (other)
-        recipe.comparisonName = labelOf(other->simulation().spec());
+        recipe.comparisonName = RunDescription::runLabel(other->simulation().spec());
     recipe.closedForm = closedFormMotion();
     if (kind == ChartKind::Difference && !differenceDrawable(other != nullptr, recipe.closedForm.has_value()))
         throw InputError(path.toStdString() + ": the difference chart needs a comparison run or a closed form");

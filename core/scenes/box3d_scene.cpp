@@ -49,8 +49,7 @@ SceneInfo makeBox3d()
         const double box = v.real("box");
         const Eigen::Vector3d p = v.vector("p0");
         if (p.x() > box || p.z() > box)
-            throw InputError("p0: " + formatValue(v.spec("p0"), p) + " lies outside the box of side " +
-                             formatNumber(box) + " m (x and z must be within [0, box])");
+            refuse(refusal::outsideBox, {"p0", formatValue(v.spec("p0"), p), formatNumber(box)});
     };
     s.equations = {
         {"2.17", "v[new] = -k v[old]", "along the axis of the wall that was hit"},

@@ -46,8 +46,7 @@ SceneInfo makeManyBalls()
     };
     s.crossCheck = [](const ParamValues& v) {
         if (v.real("box") <= 2.0 * v.real("r"))
-            throw InputError("box: " + formatNumber(v.real("box")) + " leaves no room for a ball of radius " +
-                             formatNumber(v.real("r")) + " (box must exceed 2 r)");
+            refuse(refusal::noRoomInBox, {formatNumber(v.real("box")), formatNumber(v.real("r"))});
     };
     s.equations = {
         {"2.23", "n = p1 - p2 (normalised)", "normal along the line of centres"},

@@ -58,9 +58,7 @@ SceneInfo makeTwoBalls()
         for (const char* key : {"p1", "p2"}) {
             const Eigen::Vector3d p = v.vector(key);
             if (p.x() > box || p.z() > box)
-                throw InputError(std::string(key) + ": " + formatValue(v.spec(key), p) +
-                                 " lies outside the box of side " + formatNumber(box) +
-                                 " m (x and z must be within [0, box])");
+                refuse(refusal::outsideBox, {std::string(key), formatValue(v.spec(key), p), formatNumber(box)});
         }
     };
     s.equations = {

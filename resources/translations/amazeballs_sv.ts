@@ -2453,8 +2453,8 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Etapp 1 två gånger: rapportens regler bredvid läroboksfysik</translation>
     </message>
     <message>
-        <source>The report&apos;s stage 1 (solid ball, full lines) beside the physical model with symplectic Euler and impacts located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The energy chart shows where the two part.</source>
-        <translation>Rapportens etapp 1 (hel boll, heldragna linjer) bredvid den fysikaliska modellen med symplektisk Euler och stötar lokaliserade inom steget (spökboll, prickade linjer): samma start, samma konstanter, samma steg 1. Rapporten hittar varje studs först i slutet av ett steg och stoppar bollen efter 10 studsar; den fysikaliska modellen löser varje stöttid inom steget och låter bollen komma till vila enligt sin egen viloregel. Energidiagrammet visar var de två skiljs åt.</translation>
+        <source>The report&apos;s stage 1 (solid ball, full lines) beside the physical model with symplectic Euler and impacts located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The energy chart shows where the two part, and the difference chart how far apart the two balls are (report minus physical).</source>
+        <translation>Rapportens etapp 1 (hel boll, heldragna linjer) bredvid den fysikaliska modellen med symplektisk Euler och stötar lokaliserade inom steget (spökboll, prickade linjer): samma start, samma konstanter, samma steg 1. Rapporten hittar varje studs först i slutet av ett steg och stoppar bollen efter 10 studsar; den fysikaliska modellen löser varje stöttid inom steget och låter bollen komma till vila enligt sin egen viloregel. Energidiagrammet visar var de två skiljs åt, och skillnadsdiagrammet hur långt isär de två bollarna är (rapporten minus den fysikaliska).</translation>
     </message>
     <message>
         <source>Walton S10, rolling S2</source>
@@ -2531,6 +2531,78 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Two balls of radius 5 m fly head-on at 25 m/s each, gravity off, with a coarse step of 0.5 s and impacts looked for only at the end of each step. At t = 5 s their centres are 12.5 m apart, 2.5 m short of touching; one step later they are 12.5 m apart again, each on the other&apos;s side: they passed through each other inside the step, and no step end saw them overlap. The health check pauses the run there. Set impacts to located and the contact at t = 5.05 s is solved inside the step: the balls bounce back.</source>
         <translation>Två bollar med radien 5 m flyger rakt mot varandra med 25 m/s var, utan tyngdkraft, med ett grovt steg på 0.5 s och stötar som söks bara i slutet av varje steg. Vid t = 5 s är deras centrum 12.5 m från varandra, 2.5 m från att nudda; ett steg senare är de åter 12.5 m från varandra, var och en på den andras sida: de gick igenom varandra inom steget, och inget stegslut såg dem överlappa. Hälsokontrollen pausar körningen där. Välj lokaliserade stötar så löses kontakten vid t = 5.05 s inom steget: bollarna studsar tillbaka.</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a number</source>
+        <translation>%1: %2 är inget tal</translation>
+    </message>
+    <message>
+        <source>%1: %2 is too small for a double (below 4.9e-324); write 0 or a larger value</source>
+        <translation>%1: %2 är för litet för ett flyttal (under 4.9e-324); skriv 0 eller ett större värde</translation>
+    </message>
+    <message>
+        <source>%1: %2 is too large for a double (above 1.8e308)</source>
+        <translation>%1: %2 är för stort för ett flyttal (över 1.8e308)</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a finite number</source>
+        <translation>%1: %2 är inget ändligt tal</translation>
+    </message>
+    <message>
+        <source>%1: value is not a finite number</source>
+        <translation>%1: värdet är inget ändligt tal</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a whole number</source>
+        <translation>%1: %2 är inget heltal</translation>
+    </message>
+    <message>
+        <source>%1: %2 is too large</source>
+        <translation>%1: %2 är för stort</translation>
+    </message>
+    <message>
+        <source>%1: %2 is beyond 2^53 - 1 = 9007199254740991, the largest whole number kept exactly</source>
+        <translation>%1: %2 är större än 2^53 - 1 = 9007199254740991, det största heltal som lagras exakt</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a vector x,y,z of three numbers</source>
+        <translation>%1: %2 är ingen vektor x,y,z av tre tal</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a vector x,y,z of three finite numbers</source>
+        <translation>%1: %2 är ingen vektor x,y,z av tre ändliga tal</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3</source>
+        <translation>%1: %2 ligger utanför det tillåtna intervallet %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3 component) is outside the allowed range %4</source>
+        <translation>%1: %2 (%3-komponenten) ligger utanför det tillåtna intervallet %4</translation>
+    </message>
+    <message>
+        <source>%1: %2 lies outside the box of side %3 m (x and z must be within [0, box])</source>
+        <translation>%1: %2 ligger utanför lådan med sidan %3 m (x och z måste ligga inom [0, box])</translation>
+    </message>
+    <message>
+        <source>box: %1 leaves no room for a ball of radius %2 (box must exceed 2 r)</source>
+        <translation>box: %1 lämnar ingen plats för en boll med radien %2 (box måste vara större än 2 r)</translation>
+    </message>
+    <message>
+        <source>dt: %1 must be positive</source>
+        <translation>dt: %1 måste vara positivt</translation>
+    </message>
+    <message>
+        <source>steps: %1 is outside [1, %2]</source>
+        <translation>steps: %1 ligger utanför [1, %2]</translation>
+    </message>
+    <message>
+        <source>compare with %1: %2</source>
+        <translation>jämför med %1: %2</translation>
+    </message>
+    <message>
+        <source>compare with %1: the two runs do not start at the same time with the same balls</source>
+        <translation>jämför med %1: de två körningarna startar inte vid samma tid med samma bollar</translation>
     </message>
 </context>
 <context>

@@ -17,9 +17,10 @@ private slots:
         QTest::newRow("box3d") << "box3d" << QStringList{"g", "k", "box", "p0", "v0", "max_bounces"};
         QTest::newRow("two-balls") << "two-balls"
                                    << QStringList{"g", "k", "e", "r", "box", "p1", "v1", "p2", "v2", "max_events"};
-        QTest::newRow("many-balls") << "many-balls"
-                                    << QStringList{"n", "r", "box", "g", "primary_loss", "secondary_loss",
-                                                   "max_bounces", "contact_factor", "seed"};
+        QTest::newRow("many-balls")
+            << "many-balls"
+            << QStringList{"n",   "r", "box", "g", "primary_loss", "secondary_loss", "max_bounces", "contact_factor",
+                           "seed"};
     }
 
     void everySceneHasTheContractsParameters()
@@ -71,26 +72,46 @@ private slots:
     {
         QTest::addColumn<QString>("assignment");
         QTest::addColumn<QString>("mentions");
-        QTest::newRow("not a number") << "box3d:k=abc" << "k: 'abc' is not a number";
-        QTest::newRow("trailing junk") << "box3d:k=0.5x" << "not a number";
-        QTest::newRow("nan") << "box3d:k=nan" << "k: 'nan' is not a finite number";
-        QTest::newRow("infinity") << "box3d:g=inf" << "not a finite number";
-        QTest::newRow("overflow") << "box3d:g=1e999" << "too large for a double";
-        QTest::newRow("above range") << "box3d:k=1.5" << "k: 1.5 is outside the allowed range [0, 1]";
-        QTest::newRow("negative box") << "box3d:box=-3" << "outside the allowed range (0,";
-        QTest::newRow("zero box") << "box3d:box=0" << "box: 0 is outside";
-        QTest::newRow("two components") << "box3d:p0=1,2" << "p0: '1,2' is not a vector x,y,z";
-        QTest::newRow("four components") << "box3d:p0=1,2,3,4" << "not a vector";
-        QTest::newRow("empty component") << "box3d:v0=1,,3" << "not a vector";
-        QTest::newRow("fractional count") << "bounce1d:max_bounces=2.5" << "not a whole number";
-        QTest::newRow("unknown name") << "bounce1d:box=3" << "unknown parameter 'box'";
-        QTest::newRow("no equals") << "bounce1d:k" << "is not NAME=VALUE";
-        QTest::newRow("empty value") << "bounce1d:k=" << "is not a number";
-        QTest::newRow("two signs") << "bounce1d:v0=+-5" << "is not a number";
-        QTest::newRow("hex") << "bounce1d:h0=0x10" << "is not a number";
-        QTest::newRow("newline in the name") << "bounce1d:k\n=1" << "unknown parameter 'k\\n'";
-        QTest::newRow("negative component") << "box3d:p0=-1,2,3" << "(x component) is outside";
-        QTest::newRow("too many balls") << "many-balls:n=100000000" << "n: 100000000 is outside";
+        QTest::newRow("not a number") << "box3d:k=abc"
+                                      << "k: 'abc' is not a number";
+        QTest::newRow("trailing junk") << "box3d:k=0.5x"
+                                       << "not a number";
+        QTest::newRow("nan") << "box3d:k=nan"
+                             << "k: 'nan' is not a finite number";
+        QTest::newRow("infinity") << "box3d:g=inf"
+                                  << "not a finite number";
+        QTest::newRow("overflow") << "box3d:g=1e999"
+                                  << "too large for a double";
+        QTest::newRow("above range") << "box3d:k=1.5"
+                                     << "k: 1.5 is outside the allowed range [0, 1]";
+        QTest::newRow("negative box") << "box3d:box=-3"
+                                      << "outside the allowed range (0,";
+        QTest::newRow("zero box") << "box3d:box=0"
+                                  << "box: 0 is outside";
+        QTest::newRow("two components") << "box3d:p0=1,2"
+                                        << "p0: '1,2' is not a vector x,y,z";
+        QTest::newRow("four components") << "box3d:p0=1,2,3,4"
+                                         << "not a vector";
+        QTest::newRow("empty component") << "box3d:v0=1,,3"
+                                         << "not a vector";
+        QTest::newRow("fractional count") << "bounce1d:max_bounces=2.5"
+                                          << "not a whole number";
+        QTest::newRow("unknown name") << "bounce1d:box=3"
+                                      << "unknown parameter 'box'";
+        QTest::newRow("no equals") << "bounce1d:k"
+                                   << "is not NAME=VALUE";
+        QTest::newRow("empty value") << "bounce1d:k="
+                                     << "is not a number";
+        QTest::newRow("two signs") << "bounce1d:v0=+-5"
+                                   << "is not a number";
+        QTest::newRow("hex") << "bounce1d:h0=0x10"
+                             << "is not a number";
+        QTest::newRow("newline in the name") << "bounce1d:k\n=1"
+                                             << "unknown parameter 'k\\n'";
+        QTest::newRow("negative component") << "box3d:p0=-1,2,3"
+                                            << "(x component) is outside";
+        QTest::newRow("too many balls") << "many-balls:n=100000000"
+                                        << "n: 100000000 is outside";
     }
 
     void refusesMalformedInputNamingIt()
@@ -109,6 +130,27 @@ private slots:
             QVERIFY(!QString(e.what()).contains('\n')); // one line, whatever was typed
         }
         QVERIFY(values == before); // nothing half-applied
+    }
+
+    void aRefusalCarriesItsSentenceAndTheValuesAsTyped()
+    {
+        ab::ParamValues values = ab::sceneInfo(ab::SceneId::Box3d).defaults();
+        try {
+            values.parseAssignment("v0=1,2,1e9");
+            QFAIL("accepted");
+        } catch (const ab::InputError& e) {
+            // The window translates the sentence and fills in the same values.
+            QVERIFY(e.refusal());
+            QCOMPARE(e.refusal()->text, ab::refusal::componentOutsideRange);
+            QCOMPARE(e.refusal()->args.size(), std::size_t(4));
+            QCOMPARE(e.refusal()->args[0], std::string("v0"));
+            QCOMPARE(e.refusal()->args[2], std::string("z"));
+            QCOMPARE(std::string(e.what()), ab::refusalMessage(*e.refusal()));
+            QVERIFY(QString(e.what()).startsWith("v0: 1000000000 (z component) is outside the allowed range"));
+        }
+        // One pass: a value that holds a placeholder is shown as typed.
+        QCOMPARE(ab::fillRefusal("%1: %2 is not a number", {"k", "'%2'"}), std::string("k: '%2' is not a number"));
+        QCOMPARE(ab::fillRefusal("%1 and %3", {"a"}), std::string("a and %3"));
     }
 
     void formatsValuesSoTheyReadBackExactly()

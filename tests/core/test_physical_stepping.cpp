@@ -7,7 +7,7 @@
 #include "core/physical/physical_simulation.h"
 #include "core/random.h"
 #include "core/reference/collision.h"
-#include "support/sim_helpers.h"
+#include "support/physical_spec.h"
 
 #include <QtTest>
 
@@ -21,19 +21,9 @@ using ab::SceneId;
 Q_DECLARE_METATYPE(ab::Integrator)
 Q_DECLARE_METATYPE(ab::ImpactMode)
 
-namespace {
+using testing::physical;
 
-ab::RunSpec physical(SceneId scene, Integrator integrator, double dt, const QStringList& assignments = {},
-                     ImpactMode impacts = ImpactMode::Located)
-{
-    ab::RunSpec s = testing::spec(scene, {}, ModelKind::Physical);
-    for (const QString& a : assignments)
-        s.params.parseAssignment(a.toStdString());
-    s.integrator = integrator;
-    s.impacts = impacts;
-    s.dt = dt;
-    return s;
-}
+namespace {
 
 struct Run {
     std::vector<ab::State> states;

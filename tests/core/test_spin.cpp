@@ -8,7 +8,7 @@
 #include "core/physical/physical_simulation.h"
 #include "core/random.h"
 #include "core/reference/spin_reference.h"
-#include "support/sim_helpers.h"
+#include "support/physical_spec.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -21,19 +21,9 @@ using ab::Integrator;
 using ab::ModelKind;
 using ab::SceneId;
 
-namespace {
+using testing::physical;
 
-ab::RunSpec physical(SceneId scene, Integrator integrator, double dt, const QStringList& assignments = {},
-                     ImpactMode impacts = ImpactMode::Located)
-{
-    ab::RunSpec s = testing::spec(scene, {}, ModelKind::Physical);
-    for (const QString& a : assignments)
-        s.params.parseAssignment(a.toStdString());
-    s.integrator = integrator;
-    s.impacts = impacts;
-    s.dt = dt;
-    return s;
-}
+namespace {
 
 double energyOf(const ab::Simulation& sim, const ab::State& s)
 {

@@ -168,8 +168,8 @@ inline TwoBallSeries appendixC(double gravY, double k, double e, double r, doubl
         for (Series3d* b : {&s.b1, &s.b2})
             propagation(b->p[dt - 1], b->v[dt - 1], count, gravY, k, L, delta_t, b->p[dt], b->v[dt]);
         const V3 a = s.b1.p[dt], b = s.b2.p[dt];
-        const double dist = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                      (a[2] - b[2]) * (a[2] - b[2]));
+        const double dist =
+            std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
         if (dist < 2 * r) {
             const V3 v1t = s.b1.v[dt], v2t = s.b2.v[dt];
             for (int i = 0; i < 3; ++i) {

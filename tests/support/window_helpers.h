@@ -5,12 +5,23 @@
 #include "ui/main_window.h"
 #include "ui/panels/transport_bar.h"
 
+#include <QLineEdit>
 #include <QSlider>
 #include <QTest>
 
 #include <optional>
 
 namespace testing {
+
+// Types `text` into a field and finishes the edit (Return), as a user does.
+inline void typeInto(QLineEdit* field, const QString& text)
+{
+    QVERIFY(field);
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
 
 // Takes `steps` single steps of the window's run, waits for them and brings the window up
 // to date, then moves the time slider to numerator / denominator of its range, as a user

@@ -7,6 +7,7 @@
 // nothing.
 #include "ui/charts/motion_chart.h"
 #include "ui/main_window.h"
+#include "ui/panels/chart_panel.h"
 #include "ui/panels/run_options_panel.h"
 #include "ui/presets/preset_actions.h"
 
@@ -271,7 +272,7 @@ private slots:
             const QStringList cells = lines[i].split(',');
             QCOMPARE(cells.size(), header.size());
             QCOMPARE(cells[header.indexOf("compare_t [step]")].toDouble(), cells[0].toDouble()); // the same moment
-            QCOMPARE(cells[y].toDouble(), other.p(1)[std::size_t(i - 1)]);                    // shortest round trip
+            QCOMPARE(cells[y].toDouble(), other.p(1)[std::size_t(i - 1)]);                       // shortest round trip
         }
         const QString svg = dir.filePath("e.svg");
         w.exportChartTo(ab::ui::ChartKind::Energy, svg);
@@ -288,6 +289,8 @@ private slots:
         QVERIFY(w.controller().comparing());
         QVERIFY(*w.controller().comparison() == physicalSymplectic);
         QCOMPARE(w.runOptions()->compareBox()->currentIndex(), w.runOptions()->compareIndex(physicalSymplectic));
+        // With the comparison comes the chart of report minus physical.
+        QVERIFY(w.charts()->chartShown(ab::ui::ChartKind::Difference));
         const ab::Preset captured = ab::ui::capturePreset(w, "x", "y");
         QVERIFY(captured.view.compare == physicalSymplectic);
         ab::ui::applyPresetToWindow(w, ab::loadPreset("bounce1d-report")); // an older preset: no comparison

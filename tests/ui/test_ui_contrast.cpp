@@ -5,6 +5,7 @@
 // axis labels and legends); 3:1 for what is not text (field borders, the media icons as
 // painted, every chart line and the time cursor, axis lines), in each theme with and
 // without the colour-blind-safe palette, for every chart of every scene, compared and not.
+#include "ui/charts/chart_style.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/theme/appearance.h"
 #include "ui/theme/theme.h"
@@ -163,6 +164,46 @@ private slots:
                 }
                 CHECK_CONTRAST("cursor", chart.cursorLine()->pen().color(), c.plotArea, 3.0);
             }
+    }
+
+    void comparisonLinesStandApartFromTheirRunOnDarkPlots()
+    {
+        // On a dark plot the comparison's darkened family sank into the background as a
+        // faint grey: there each comparison line is saturated and of another colour than
+        // the run line it shadows (RGB distance, 0-441).
+        for (Theme theme : ab::ui::allThemes()) {
+            if (!ab::ui::isDark(theme))
+                continue;
+            for (ab::ui::ChartKind kind : ab::ui::allChartKinds()) {
+                ab::ui::MotionChart chart(kind);
+                chart.configure(ab::sceneInfo(ab::SceneId::Box3d), 0, {true, false});
+                chart.setComparison("report", "physical rk4");
+                ab::ui::applyToChart(&chart, {theme, false, 1.0});
+                int pairs = 0;
+                for (QAbstractSeries* s : chart.series()) {
+                    const QVariant of = s->property(ab::ui::comparisonOfProperty);
+                    if (!of.isValid())
+                        continue;
+                    const QColor comparison = static_cast<QLineSeries*>(s)->pen().color();
+                    QVERIFY2(comparison.hslSaturationF() >= 0.5f, qPrintable(comparison.name()));
+                    for (QAbstractSeries* r : chart.series()) {
+                        const QVariant base = r->property("ab_basePen");
+                        if (r == s || r->property(ab::ui::comparisonOfProperty).isValid() || !base.isValid() ||
+                            base.value<QPen>().color() != of.value<QColor>())
+                            continue;
+                        const QColor run = static_cast<QLineSeries*>(r)->pen().color();
+                        const double d = std::hypot(run.red() - comparison.red(), run.green() - comparison.green(),
+                                                    run.blue() - comparison.blue());
+                        QVERIFY2(d >= 80.0, qPrintable(QStringLiteral("%1: run %2, comparison %3")
+                                                           .arg(QString::fromLatin1(ab::ui::chartKey(kind).data()),
+                                                                run.name(), comparison.name())));
+                        ++pairs;
+                    }
+                }
+                if (kind == ab::ui::ChartKind::Position)
+                    QVERIFY(pairs >= 3); // x, y and z each met their comparison
+            }
+        }
     }
 };
 

@@ -37,6 +37,8 @@ using ab::SceneId;
 using ab::ui::Language;
 using ab::ui::MainWindow;
 
+using testing::typeInto;
+
 namespace {
 
 // The simulated time of the first thing a run is about: the first impact that turns a
@@ -80,15 +82,6 @@ double secondsToFirstEvent(MainWindow& w)
     const ab::SceneInfo& info = ab::sceneInfo(w.controller().spec().scene);
     const double rate = w.controller().speed() * ab::ui::RunController::realTimeRate(info);
     return firstEventTime(w.controller().spec(), w.controller().plannedSteps()) / rate;
-}
-
-void typeInto(QLineEdit* field, const QString& text)
-{
-    QVERIFY(field);
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClicks(field, text);
-    QTest::keyClick(field, Qt::Key_Return);
 }
 
 // Runs the window's run `steps` steps on and brings the window up to date.

@@ -276,6 +276,27 @@ private slots:
         }
     }
 
+    void swedishParameterPanelRefusesInSwedish()
+    {
+        ab::ui::installLanguage(Language::Swedish);
+        ab::ui::MainWindow w;
+        w.showScene(SceneId::Box3d);
+        const double before = w.controller().spec().params.real("k");
+        auto* k = w.findChild<QLineEdit*>(QStringLiteral("param-k"));
+        auto* error = w.findChild<QLabel*>(QStringLiteral("parameterError"));
+        QVERIFY(k && error);
+        const QStringList typed{QStringLiteral("5"), QStringLiteral("abc")};
+        const QStringList expected{QStringLiteral("k: 5 ligger utanför det tillåtna intervallet"),
+                                   QStringLiteral("k: 'abc' är inget tal")};
+        for (int i = 0; i < typed.size(); ++i) {
+            k->setText(typed[i]);
+            emit k->editingFinished();
+            QVERIFY2(error->text().contains(expected[i]), qPrintable(error->text()));
+            QVERIFY2(!error->text().contains(QLatin1String(" is ")), qPrintable(error->text()));
+        }
+        QCOMPARE(w.controller().spec().params.real("k"), before); // nothing applied
+    }
+
     void localeChoosesTheLanguage()
     {
         QCOMPARE(ab::ui::languageForLocale(QLocale(QLocale::Swedish, QLocale::Sweden)), Language::Swedish);

@@ -263,6 +263,15 @@ void addRows()
                     << s->id << lecture << language;
 }
 
+// The window of the current data row (stage, mode and language), arranged.
+Arranged arrangeRow()
+{
+    QFETCH(SceneId, scene);
+    QFETCH(bool, lecture);
+    QFETCH(Language, language);
+    return arrange(scene, lecture, language);
+}
+
 } // namespace
 
 class UiLayout : public QObject {
@@ -275,10 +284,7 @@ private slots:
     void noTextIsCutOnAnyChartPage_data() { addRows(); }
     void noTextIsCutOnAnyChartPage()
     {
-        QFETCH(SceneId, scene);
-        QFETCH(bool, lecture);
-        QFETCH(Language, language);
-        Arranged a = arrange(scene, lecture, language);
+        Arranged a = arrangeRow();
         QVERIFY(a.ran);
         ab::ui::MainWindow& w = *a.window;
         QVERIFY(w.frameGeometry().width() <= screenSize().width());
@@ -343,16 +349,13 @@ private slots:
     void dialogsOpenInsideTheScreenAndReadWhole_data() { addRows(); }
     void dialogsOpenInsideTheScreenAndReadWhole()
     {
-        QFETCH(SceneId, scene);
-        QFETCH(bool, lecture);
-        QFETCH(Language, language);
-        Arranged a = arrange(scene, lecture, language);
+        Arranged a = arrangeRow();
         QVERIFY(a.ran);
         ab::ui::MainWindow& w = *a.window;
         const QRect screen = w.screen()->availableGeometry();
         std::vector<std::unique_ptr<QDialog>> dialogs;
         dialogs.push_back(std::make_unique<ab::ui::StudyDialog>(w.controller().spec(), &w));
-        dialogs.push_back(std::make_unique<ab::ui::StabilityDialog>(scene, &w));
+        dialogs.push_back(std::make_unique<ab::ui::StabilityDialog>(w.scene(), &w));
         for (const auto& dialog : dialogs) {
             dialog->show();
             settle();

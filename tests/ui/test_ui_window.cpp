@@ -31,17 +31,9 @@
 using ab::SceneId;
 using ab::ui::MainWindow;
 
-namespace {
+using testing::typeInto;
 
-// Types `text` into the constant `key` and finishes the edit (Return), as a user does.
-void typeInto(QLineEdit* field, const QString& text)
-{
-    QVERIFY(field);
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClicks(field, text);
-    QTest::keyClick(field, Qt::Key_Return);
-}
+namespace {
 
 std::vector<std::string> expectedKeys(SceneId id, ab::ModelKind model)
 {

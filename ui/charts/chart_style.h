@@ -37,6 +37,12 @@ enum class LineFamily { Run, ClosedForm, Comparison };
 // The colour of line `line` of a chart of `kind` (x, y, z; kinetic, potential, total,
 // spring; moving balls, impacts) in `family`.
 QColor lineColour(ChartKind kind, int line, LineFamily family = LineFamily::Run);
+// The comparison's colour for a run line of colour `run` on a dark plot, where the
+// darkened family of lineColour() would sink into the background: the run's hue turned
+// up to 40 degrees towards violet (a violet one 60 on, to magenta), saturated and light.
+QColor comparisonOnDark(const QColor& run);
+// The property a comparison series carries: the colour of the run line it shadows.
+inline constexpr char comparisonOfProperty[] = "ab_comparisonOf";
 // Line `line`, the `order`-th line the chart shows (0-based), of `family`.
 QPen linePen(ChartKind kind, int line, int order, LineFamily family, const ChartLook& look);
 QPen cursorPen(const ChartLook& look);

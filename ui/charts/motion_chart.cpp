@@ -133,6 +133,7 @@ void MotionChart::applyPens()
     for (int a = 0; a < 4; ++a) {
         lines_[a]->setPen(linePen(kind_, a, a, LineFamily::Run, look_));
         overlays_[a]->setPen(linePen(kind_, a, a, LineFamily::Comparison, look_));
+        overlays_[a]->setProperty(comparisonOfProperty, lineColour(kind_, a, LineFamily::Run));
         if (a < 3)
             references_[a]->setPen(linePen(kind_, a, a, LineFamily::ClosedForm, look_));
     }

@@ -44,6 +44,11 @@ std::string schemeLine(const RunFacts& run, const SceneInfo& info)
 
 } // namespace
 
+QString RunDescription::runLabel(const RunSpec& spec)
+{
+    return qs(variantLabel(RunVariant{spec.model, spec.integrator, spec.impacts, spec.dt}));
+}
+
 QString RunDescription::caption(const RunFacts& run, const RunFacts* comparison, bool closedForm)
 {
     const RunSpec& spec = *run.spec;

@@ -28,6 +28,8 @@ public:
     // "Stage 2 (box3d), report model (the report's own step and impact rules), dt = 0.01 s;
     // k = 0.8 (report: 0.9); dotted: physical rk4; dashed: closed form".
     static QString caption(const RunFacts& run, const RunFacts* comparison, bool closedForm);
+    // The run's short name in legends and captions: "report", "physical rk4".
+    static QString runLabel(const RunSpec& spec);
     // The CSV's comment lines, without the leading "# ", in English (a data file's): `what`
     // the file holds ("chart data", "trajectory"); ball is 0-based (written 1-based), and
     // negative for a file of every ball.

@@ -247,7 +247,8 @@ const char* const listed[] = {
         "located inside the step (ghost ball, dotted lines): the same start, the same constants, the same step of 1. "
         "The report finds each bounce only at the end of a step and stops the ball after 10 bounces; the physical "
         "model solves each impact time inside the step and lets the ball come to rest by its own rest rule. The "
-        "energy chart shows where the two part."),
+        "energy chart shows where the two part, and the difference chart how far apart the two balls are (report "
+        "minus physical)."),
     QT_TRANSLATE_NOOP("core", "Zeno: infinitely many bounces in a finite time (k = 0.9)"),
     QT_TRANSLATE_NOOP(
         "core",
@@ -304,6 +305,25 @@ const char* const listed[] = {
                               "(2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and "
                               "meet along z. Instead of eqs 2.4-2.11 the report's code swaps the two velocities and "
                               "scales them by 0.95; run the physical model beside it to see the difference."),
+    // The refusals (core/input_error.h).
+    QT_TRANSLATE_NOOP("core", "%1: %2 is not a number"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is too small for a double (below 4.9e-324); write 0 or a larger value"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is too large for a double (above 1.8e308)"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is not a finite number"),
+    QT_TRANSLATE_NOOP("core", "%1: value is not a finite number"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is not a whole number"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is too large"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is beyond 2^53 - 1 = 9007199254740991, the largest whole number kept exactly"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is not a vector x,y,z of three numbers"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is not a vector x,y,z of three finite numbers"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 is outside the allowed range %3"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 (%3 component) is outside the allowed range %4"),
+    QT_TRANSLATE_NOOP("core", "%1: %2 lies outside the box of side %3 m (x and z must be within [0, box])"),
+    QT_TRANSLATE_NOOP("core", "box: %1 leaves no room for a ball of radius %2 (box must exceed 2 r)"),
+    QT_TRANSLATE_NOOP("core", "dt: %1 must be positive"),
+    QT_TRANSLATE_NOOP("core", "steps: %1 is outside [1, %2]"),
+    QT_TRANSLATE_NOOP("core", "compare with %1: %2"),
+    QT_TRANSLATE_NOOP("core", "compare with %1: the two runs do not start at the same time with the same balls"),
 };
 
 } // namespace

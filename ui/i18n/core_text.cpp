@@ -18,6 +18,19 @@ QString coreText(std::string_view text)
     return QCoreApplication::translate(coreContext, source.c_str());
 }
 
+QString refusalText(const Refusal& r)
+{
+    std::vector<std::string> args = r.args;
+    if (r.detail)
+        args.push_back(refusalText(*r.detail).toStdString());
+    return QString::fromStdString(fillRefusal(coreText(r.text).toStdString(), args));
+}
+
+QString refusalText(const InputError& e)
+{
+    return e.refusal() ? refusalText(*e.refusal()) : QString::fromUtf8(e.what());
+}
+
 std::vector<std::string> coreDisplayedStrings()
 {
     std::set<std::string> out;
@@ -51,6 +64,8 @@ std::vector<std::string> coreDisplayedStrings()
         add(b.preset.name);
         add(b.preset.description);
     }
+    for (std::string_view text : refusalTexts())
+        add(text);
     return {out.begin(), out.end()};
 }
 

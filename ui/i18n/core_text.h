@@ -4,6 +4,8 @@
 // string for lupdate, and a test checks that list against the tables.
 #pragma once
 
+#include "core/input_error.h"
+
 #include <QString>
 
 #include <string>
@@ -17,10 +19,15 @@ inline constexpr char coreContext[] = "core";
 // `text` from a core table in the current language (itself where no translation exists).
 QString coreText(std::string_view text);
 
+// A refusal in the current language: its sentence translated, the values it quotes filled
+// in as typed; an error the core gave as plain text is shown as it is.
+QString refusalText(const Refusal& r);
+QString refusalText(const InputError& e);
+
 // Every string of the core's tables that the window shows: scene titles, report
 // references, summaries, units, equation meanings, notes, parameter meanings and
 // references, model titles and summaries, integrator titles, the built-in presets' names and
-// descriptions.
+// descriptions, the refusals' sentences.
 std::vector<std::string> coreDisplayedStrings();
 
 // The source strings listed for lupdate in core_strings.cpp.

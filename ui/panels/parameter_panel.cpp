@@ -178,7 +178,7 @@ void ParameterPanel::edited(const std::string& key)
         if (scene_->crossCheck)
             scene_->crossCheck(proposed);
     } catch (const InputError& e) {
-        refuse(key, QString::fromUtf8(e.what()));
+        refuse(key, refusalText(e));
         return;
     }
     // Applied, the window shows the values (and this field is fixed); refused, it names

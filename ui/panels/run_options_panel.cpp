@@ -334,20 +334,20 @@ void RunOptionsPanel::propose()
         if (!dt.isEmpty()) {
             o.dt = parseReal(dt.toStdString(), "dt");
             if (*o.dt <= 0.0)
-                throw InputError("dt: " + formatNumber(*o.dt) + " must be positive");
+                throw InputError(Refusal{refusal::stepNotPositive, {formatNumber(*o.dt)}});
         }
         refused_.erase(dt_);
     } catch (const InputError& e) {
-        refused_[dt_] = QString::fromUtf8(e.what());
+        refused_[dt_] = refusalText(e);
         o.dt = shown_.dt;
     }
     try {
         o.steps = parseInteger(steps_->text().trimmed().toStdString(), "steps");
         if (o.steps < 1 || o.steps > 4'000'000'000LL)
-            throw InputError("steps: " + std::to_string(o.steps) + " is outside [1, 4000000000]");
+            throw InputError(Refusal{refusal::stepsOutside, {std::to_string(o.steps), "4000000000"}});
         refused_.erase(steps_);
     } catch (const InputError& e) {
-        refused_[steps_] = QString::fromUtf8(e.what());
+        refused_[steps_] = refusalText(e);
         o.steps = shown_.steps;
     }
     windowRefusal_.clear();

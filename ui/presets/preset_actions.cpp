@@ -224,7 +224,7 @@ std::optional<QString> PresetActions::open(const QString& nameOrPath)
         emit presetOpened(coreText(preset.name));
         return std::nullopt;
     } catch (const InputError& e) {
-        const QString message = QString::fromUtf8(e.what());
+        const QString message = refusalText(e);
         window_->statusBar()->showMessage(message, 15000);
         // Window-modal and not waited for: the window stays as it was, the message says why.
         auto* box = new QMessageBox(QMessageBox::Warning, tr("Preset not opened"), message, QMessageBox::Ok, window_);

@@ -26,16 +26,22 @@ namespace {
 // they start at the same time with the same balls.
 std::unique_ptr<Simulation> makeComparison(const RunSpec& main, const Simulation& mainSim, const RunVariant& variant)
 {
-    const std::string who = "compare with " + variantLabel(variant) + ": ";
+    const std::string who = variantLabel(variant);
     std::unique_ptr<Simulation> sim;
     try {
         sim = makeSimulation(variantOf(main, variant));
     } catch (const InputError& e) {
-        throw InputError(who + e.what());
+        // The core's reason, quoted inside; translated with it where it is a Refusal.
+        Refusal r{refusal::compareWith, {who}};
+        if (e.refusal())
+            r.detail = e.shared();
+        else
+            r.args.emplace_back(e.what());
+        throw InputError(std::move(r));
     }
     const State a = mainSim.start(), b = sim->start();
     if (a.t != b.t || a.size() != b.size())
-        throw InputError(who + "the two runs do not start at the same time with the same balls");
+        throw InputError(Refusal{refusal::compareStart, {who}});
     return sim;
 }
 

@@ -3,6 +3,8 @@
 
 #include "theme_style.h"
 
+#include "ui/charts/chart_style.h"
+
 #include <QAbstractAxis>
 #include <QApplication>
 #include <QChart>
@@ -39,6 +41,9 @@ void styleSeries(QXYSeries* series, const Appearance& a, const QColor& plotArea)
     QPen pen = base<QPen>(series, "ab_basePen", [series] { return series->pen(); });
     pen.setWidthF(pen.widthF() * a.scale);
     QColor colour = pen.color();
+    const QVariant shadows = series->property(comparisonOfProperty);
+    if (shadows.isValid() && isDark(a.theme))
+        colour = comparisonOnDark(shadows.value<QColor>());
     if (a.colourBlindSafe)
         colour = colourBlindSafe(colour);
     if (colour.hsvSaturationF() < 0.2f) // the grey time cursor follows the text colour

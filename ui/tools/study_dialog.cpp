@@ -5,6 +5,7 @@
 
 #include "ui/charts/chart_export.h"
 #include "ui/charts/work_precision_chart.h"
+#include "ui/i18n/core_text.h"
 
 #include "core/io/atomic_file.h"
 #include "core/reference/reference.h"
@@ -64,7 +65,7 @@ StudyDialog::StudyDialog(const RunSpec& spec, QWidget* parent) : QDialog(parent)
     try {
         options_ = study::defaultOptions(spec);
     } catch (const InputError& e) {
-        unavailable_ = QString::fromUtf8(e.what());
+        unavailable_ = refusalText(e);
     }
     auto* layout = scrollingContent(this);
     if (!options_) {
@@ -259,7 +260,7 @@ void StudyDialog::start()
     try {
         o = sweep();
     } catch (const InputError& e) {
-        status_->setText(QString::fromUtf8(e.what()));
+        status_->setText(refusalText(e));
         return;
     }
     result_.reset();
