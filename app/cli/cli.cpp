@@ -54,7 +54,7 @@ int helpCommand(const Parsed& args, std::ostream& out, std::ostream& err)
         const CommandSpec* c = findCommand(*name);
         if (!c)
             throw InputError("help: unknown command '" + printableInput(*name) + "'" +
-                             didYouMean(*name, commandNames()) + " (choose " + joined(commandNames()) + ")");
+                             nearOrChoices(*name, commandNames()));
         return printChecked("help", out, err, [&] { printCommandHelp(*c, out); });
     }
     return printChecked("help", out, err, [&] { printUsage(out); });

@@ -29,6 +29,14 @@ void wrapped(std::ostream& out, const std::string& text, std::size_t indent, std
     flush();
 }
 
+// "  label    text", the text wrapped in a column after the label's.
+void hanging(std::ostream& out, const std::string& label, std::size_t column, const std::string& text)
+{
+    std::ostringstream body;
+    wrapped(body, text, column);
+    out << "  " << std::left << std::setw(int(column - 2)) << label << body.str().substr(column);
+}
+
 } // namespace
 
 std::string optionSynopsis(const OptionSpec& o)
@@ -64,19 +72,19 @@ const std::vector<std::pair<int, std::string>>& exitStatuses()
 void printUsage(std::ostream& out)
 {
     out << "usage: amazeballs-cli COMMAND [ARGS]\n"
-           "       amazeballs-cli help COMMAND     (or COMMAND --help) a command's options, units and defaults\n"
+           "       amazeballs-cli help COMMAND    a command's options, units and defaults\n"
+           "       amazeballs-cli COMMAND --help  the same\n"
            "       amazeballs-cli --version\n\ncommands:\n";
-    for (const CommandSpec& c : commandTable()) {
-        out << "  " << std::left << std::setw(22) << c.synopsis() << c.summary << "\n";
-    }
-    out << "\nSCENE is one of " << joined(valueWords(Values::Scene))
-        << "; amazeballs-cli list shows each scene's parameters.\n\nexit status:\n";
-    for (const auto& [status, meaning] : exitStatuses()) {
-        out << "  " << std::left << std::setw(5) << status;
-        std::ostringstream text;
-        wrapped(text, meaning, 7);
-        out << text.str().substr(7);
-    }
+    for (const CommandSpec& c : commandTable())
+        hanging(out, c.synopsis(), 27, c.summary);
+    out << "\n";
+    wrapped(out,
+            "SCENE is one of " + joined(valueWords(Values::Scene)) +
+                "; amazeballs-cli list shows each scene's parameters.",
+            0);
+    out << "\nexit status:\n";
+    for (const auto& [status, meaning] : exitStatuses())
+        hanging(out, std::to_string(status), 7, meaning);
     out << "\nThe manual: man amazeballs-cli.\n";
 }
 

@@ -42,12 +42,12 @@ std::string bareName(const std::string& arg)
 {
     const std::string what = e.what();
     static const std::regex missing(R"(^(--[A-Za-z0-9-]+): \d+ required .* missing$)");
-    static const std::regex override(R"(^(--[A-Za-z0-9-]+) was given a disallowed flag override$)");
+    static const std::regex override(R"(^-*([A-Za-z0-9-]+) was given a disallowed flag override$)");
     std::smatch m;
     if (std::regex_match(what, m, missing))
         throw InputError(m[1].str() + ": missing value");
     if (std::regex_match(what, m, override))
-        throw InputError(m[1].str() + ": takes no value");
+        throw InputError("--" + m[1].str() + ": takes no value");
     throw InputError(where + printableInput(what));
 }
 
@@ -92,9 +92,10 @@ Parsed parseCommand(const CommandSpec& command, const std::vector<std::string>& 
     } catch (const CLI::ParseError& e) {
         throwParseError(where, e);
     }
-    const std::vector<std::string> rest = app->remaining();
-    if (!rest.empty())
-        throwLeftOver(where, rest.front(), optionNames(command));
+    // CLI11 leaves the "--" that ends the options among the extras.
+    for (const std::string& arg : app->remaining())
+        if (arg != "--")
+            throwLeftOver(where, arg, optionNames(command));
     std::optional<std::string> operand;
     if (!command.operand.empty())
         if (const CLI::Option* o = app->get_option(kOperand); o->count() > 0)

@@ -108,6 +108,8 @@ private slots:
         QTest::newRow("compare's model") << QStringList{"chart", "box3d",      "--chart",   "energy",
                                                         "--out", "/tmp/x.png", "--compare", "phsyical"}
                                          << "did you mean physical?";
+        QTest::newRow("flag given a value")
+            << QStringList{"run", "bounce1d", "--summary=yes"} << "--summary: takes no value";
         QTest::newRow("far from every name") << QStringList{"run", "bounce1d", "--set", "zz=1"}
                                              << "unknown parameter 'zz' for bounce1d (amazeballs-cli list names them)";
         QTest::newRow("value far from every choice")
@@ -151,6 +153,10 @@ private slots:
         QCOMPARE(*p.integer("steps", 1, 10), 4LL);
         QCOMPARE(p.options("set"), (std::vector<std::string>{"k=0.5", "g=1"}));
         QVERIFY(!p.flag("summary"));
+        // "--" ends the options: what follows is the operand even where it looks like one.
+        const Result r = cli({"run", "--steps", "2", "--", "bounce1d"});
+        QCOMPARE(r.status, 0);
+        QCOMPARE(std::count(r.out.begin(), r.out.end(), '\n'), 4L); // header and 3 states
     }
 };
 
