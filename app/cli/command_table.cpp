@@ -291,11 +291,13 @@ std::vector<std::string> valueWords(Values v)
         for (Integrator i : allIntegrators())
             words.emplace_back(integratorKey(i));
         break;
-    case V::Impacts:
-        words = {"located", "step-end"};
+    case V::Impacts: // the keys core/scene.h parses, for each ImpactMode
+        for (ImpactMode m : {ImpactMode::Located, ImpactMode::StepEnd})
+            words.emplace_back(impactModeKey(m));
         break;
     case V::Broadphase:
-        words = {"grid", "all-pairs"};
+        for (Broadphase b : {Broadphase::Grid, Broadphase::AllPairs})
+            words.emplace_back(broadphaseKey(b));
         break;
     case V::Chart:
         for (ui::ChartKind k : ui::allChartKinds())

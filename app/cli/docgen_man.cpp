@@ -66,8 +66,8 @@ void sceneSection(std::ostream& out)
             << "\n";
         for (const ParamSpec& p : s->params) {
             out << ".TP\n.B " << roff(p.key) << "\n"
-                << roff(p.meaning + "; " + (p.unit.empty() ? "" : p.unit + ", ") + "default " +
-                        formatValue(p, p.defaultValue) + ", range " + formatRange(p) +
+                << roff(p.meaning + "; " + (p.unit.empty() || p.unit == "1" ? "no unit" : "in " + p.unit) +
+                        ", default " + formatValue(p, p.defaultValue) + ", range " + formatRange(p) +
                         (p.equation.empty() ? "" : ", " + p.equation) + ".")
                 << "\n";
         }

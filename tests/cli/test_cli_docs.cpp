@@ -11,6 +11,10 @@
 
 #include "core/scene.h"
 
+#ifdef AB_WINDOW_PATH
+#include "ui/theme/theme.h"
+#endif
+
 #include <CLI/CLI.hpp>
 #include <QProcess>
 #include <QRegularExpression>
@@ -134,6 +138,22 @@ private slots:
                      name.c_str());
             QVERIFY2(zsh.find(name + "[") != std::string::npos, name.c_str());
         }
+#endif
+    }
+
+    // The window's option table lists --theme's values for the completions: they are the
+    // window's themes.
+    void theWindowsThemeWordsAreItsThemes()
+    {
+#ifndef AB_WINDOW_PATH
+        QSKIP("the window is not built");
+#else
+        QStringList themes;
+        for (ab::ui::Theme t : ab::ui::allThemes())
+            themes << ab::ui::themeKey(t);
+        for (const ab::app::WindowOption& w : ab::app::windowOptions())
+            if (std::string(w.name) == "theme")
+                QCOMPARE(QString::fromLatin1(w.words).split(' '), themes);
 #endif
     }
 
