@@ -3,6 +3,9 @@
 // `amazeballs [FILE.json] [--preset NAME|FILE] [--scene KEY] [--set NAME=VALUE]... [--speed X]
 //  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]
 //  [--compare MODEL[:INTEGRATOR[:IMPACTS]]]`.
+#include "cli/suggest.h"
+#include "window_options.h"
+
 #include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/presets/preset_actions.h"
@@ -250,6 +253,23 @@ void checkAssignment(const QString& assignment, std::optional<ab::SceneId> scene
     ab::RunSpec(ab::allScenes().front()->id).params.parseAssignment(text); // names what is wrong
 }
 
+std::vector<std::string> sceneKeys()
+{
+    std::vector<std::string> keys;
+    for (const ab::SceneInfo* info : ab::allScenes())
+        keys.push_back(info->key);
+    return keys;
+}
+
+// " (did you mean --steps?)" for the nearest of `names` to a misspelt `word`, or nothing.
+QString suggestion(const QString& word, const std::vector<std::string>& names, const char* prefix)
+{
+    const std::vector<std::string> near = ab::cli::nearest(word.toStdString(), names);
+    if (near.empty())
+        return {};
+    return QApplication::translate("main", " (did you mean %1?)").arg(QString::fromStdString(prefix + near.front()));
+}
+
 // Reads the options; returns an exit status when the program ends here (--help,
 // --version: 0; a bad option or preset: 2, with one line on stderr).
 std::optional<int> readOptions(const QStringList& arguments, Options& o)
@@ -258,39 +278,25 @@ std::optional<int> readOptions(const QStringList& arguments, Options& o)
     parser.setApplicationDescription(QApplication::translate("main", "Bouncing and colliding balls, stage by stage."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
-    const QCommandLineOption sceneOption("scene", QApplication::translate("main", "Start on stage KEY."), "KEY");
-    const QCommandLineOption setOption("set", QApplication::translate("main", "Set a constant, NAME=VALUE."),
-                                       "NAME=VALUE");
-    const QCommandLineOption playOption("play", QApplication::translate("main", "Start playing."));
-    const QCommandLineOption speedOption(
-        "speed", QApplication::translate("main", "Play at X times real time (0.1 to 10)."), "X");
-    const QCommandLineOption measureOption(
-        "measure-frames", QApplication::translate("main", "Play for S seconds, print frame times, quit."), "S");
-    const QCommandLineOption presetOption(
-        "preset", QApplication::translate("main", "Open a built-in preset by NAME, or a preset FILE."), "NAME|FILE");
-    const QCommandLineOption freshOption(
-        "fresh", QApplication::translate("main", "Start as on a first start: neither read nor write the remembered "
-                                                 "window, stage and settings."));
-    const QCommandLineOption lectureOption(
-        "lecture",
-        QApplication::translate("main", "Open in lecture mode: full screen, large text, the step-by-step walk."));
-    const QCommandLineOption compareOption(
-        "compare",
-        QApplication::translate("main", "Run the stage again beside the first, computed by MODEL (report or "
-                                        "physical), INTEGRATOR and IMPACTS (located or step-end)."),
-        "MODEL[:INTEGRATOR[:IMPACTS]]");
-    const QCommandLineOption themeOption(
-        "theme", QApplication::translate("main", "Colours: light, dark, high-contrast-light or high-contrast-dark."),
-        "KEY");
-    parser.addOptions({compareOption, sceneOption, setOption, playOption, speedOption, measureOption, presetOption,
-                       freshOption, lectureOption, themeOption});
+    for (const ab::app::WindowOption& w : ab::app::windowOptions())
+        parser.addOption(QCommandLineOption(QString::fromLatin1(w.name), QApplication::translate("main", w.help),
+                                            QString::fromLatin1(w.value)));
     parser.addPositionalArgument("FILE.json", QApplication::translate("main", "A preset file to open."), "[FILE.json]");
     auto fail = [](const QString& why) {
         std::fprintf(stderr, "amazeballs: %s\n", oneLine(why.toStdString()).c_str());
         return 2;
     };
-    if (!parser.parse(withoutQtOptions(arguments)))
-        return fail(parser.errorText());
+    if (!parser.parse(withoutQtOptions(arguments))) {
+        std::vector<std::string> names{"help", "help-all", "version"};
+        for (const ab::app::WindowOption& w : ab::app::windowOptions())
+            names.emplace_back(w.name);
+        const QStringList unknown = parser.unknownOptionNames();
+        const QString near = unknown.isEmpty() ? QString() : suggestion(unknown.front(), names, "--");
+        QString why = parser.errorText();
+        if (!near.isEmpty() && why.endsWith('.'))
+            why.chop(1); // "Unknown option 'sceen' (did you mean --scene?)"
+        return fail(why + near);
+    }
     if (parser.isSet(helpOption)) {
         std::fputs(qPrintable(parser.helpText()), stdout);
         return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : 4;
@@ -301,59 +307,62 @@ std::optional<int> readOptions(const QStringList& arguments, Options& o)
     }
     try {
         const QStringList files = parser.positionalArguments();
-        if (files.size() > 1 || (files.size() == 1 && parser.isSet(presetOption)))
+        if (files.size() > 1 || (files.size() == 1 && parser.isSet(QStringLiteral("preset"))))
             throw ab::InputError(
                 QApplication::translate("main", "give one preset: a FILE.json or --preset NAME|FILE").toStdString());
-        if (!files.isEmpty() || parser.isSet(presetOption)) {
-            if (parser.isSet(sceneOption))
+        if (!files.isEmpty() || parser.isSet(QStringLiteral("preset"))) {
+            if (parser.isSet(QStringLiteral("scene")))
                 throw ab::InputError(
                     QApplication::translate("main", "--scene: a preset names its own stage; give one or the other")
                         .toStdString());
-            o.preset = ab::loadPreset((files.isEmpty() ? parser.value(presetOption) : files.front()).toStdString());
+            o.preset = ab::loadPreset(
+                (files.isEmpty() ? parser.value(QStringLiteral("preset")) : files.front()).toStdString());
             o.scene = o.preset->scene;
         }
-        if (parser.isSet(sceneOption)) {
-            const ab::SceneInfo* scene = ab::findScene(parser.value(sceneOption).toStdString());
+        if (parser.isSet(QStringLiteral("scene"))) {
+            const ab::SceneInfo* scene = ab::findScene(parser.value(QStringLiteral("scene")).toStdString());
             if (!scene)
-                throw ab::InputError(QApplication::translate("main", "--scene: unknown scene '%1'")
-                                         .arg(parser.value(sceneOption))
+                throw ab::InputError((QApplication::translate("main", "--scene: unknown scene '%1'")
+                                          .arg(parser.value(QStringLiteral("scene"))) +
+                                      suggestion(parser.value(QStringLiteral("scene")), sceneKeys(), ""))
                                          .toStdString());
             o.scene = scene->id;
         }
-        o.sets = parser.values(setOption);
+        o.sets = parser.values(QStringLiteral("set"));
         for (const QString& assignment : o.sets)
             checkAssignment(assignment, o.scene);
-        if (parser.isSet(compareOption))
-            o.compare = parseCompare(parser.value(compareOption));
-        if (parser.isSet(speedOption)) {
-            o.speed = ab::parseReal(parser.value(speedOption).toStdString(), "--speed");
+        if (parser.isSet(QStringLiteral("compare")))
+            o.compare = parseCompare(parser.value(QStringLiteral("compare")));
+        if (parser.isSet(QStringLiteral("speed"))) {
+            o.speed = ab::parseReal(parser.value(QStringLiteral("speed")).toStdString(), "--speed");
             if (*o.speed < 0.1 || *o.speed > 10.0)
                 throw ab::InputError(QApplication::translate("main", "--speed: %1 is outside [0.1, 10]")
                                          .arg(QString::fromStdString(ab::formatNumber(*o.speed)))
                                          .toStdString());
         }
-        if (parser.isSet(measureOption)) {
+        if (parser.isSet(QStringLiteral("measure-frames"))) {
             // Bounded: a measurement is at most an hour (a timer counts int milliseconds).
-            o.measureSeconds = ab::parseReal(parser.value(measureOption).toStdString(), "--measure-frames");
+            o.measureSeconds =
+                ab::parseReal(parser.value(QStringLiteral("measure-frames")).toStdString(), "--measure-frames");
             if (!(*o.measureSeconds >= 1.0 && *o.measureSeconds <= 3600.0))
                 throw ab::InputError(
                     QApplication::translate("main", "--measure-frames: %1 is outside [1, 3600] seconds")
                         .arg(QString::fromStdString(ab::formatNumber(*o.measureSeconds)))
                         .toStdString());
         }
-        if (parser.isSet(themeOption)) {
-            o.theme = ab::ui::parseTheme(parser.value(themeOption));
+        if (parser.isSet(QStringLiteral("theme"))) {
+            o.theme = ab::ui::parseTheme(parser.value(QStringLiteral("theme")));
             if (!o.theme)
                 throw ab::InputError(QApplication::translate("main", "--theme: unknown theme '%1'")
-                                         .arg(parser.value(themeOption))
+                                         .arg(parser.value(QStringLiteral("theme")))
                                          .toStdString());
         }
     } catch (const ab::InputError& e) {
         return fail(QString::fromStdString(e.what()));
     }
-    o.play = parser.isSet(playOption);
-    o.fresh = parser.isSet(freshOption);
-    o.lecture = parser.isSet(lectureOption);
+    o.play = parser.isSet(QStringLiteral("play"));
+    o.fresh = parser.isSet(QStringLiteral("fresh"));
+    o.lecture = parser.isSet(QStringLiteral("lecture"));
     return std::nullopt;
 }
 

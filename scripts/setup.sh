@@ -10,7 +10,7 @@ packages=(build-essential cmake pkg-config qt6-base-dev libqt6opengl6-dev qt6-ch
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libeigen3-dev libgl-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   xvfb xauth libgl1-mesa-dri fontconfig fonts-dejavu-core
-  appstream desktop-file-utils dpkg-dev poppler-utils)
+  appstream desktop-file-utils dpkg-dev poppler-utils libcli11-dev groff-base zsh)
 read -r -a extra <<< "${AMAZEBALLS_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")
 build_dir=${AMAZEBALLS_BUILD_DIR:-build}

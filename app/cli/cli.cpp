@@ -2,82 +2,18 @@
 #include "cli.h"
 
 #include "commands.h"
+#include "help.h"
 #include "interrupt.h"
+#include "parser.h"
+#include "suggest.h"
 
 #include "../../core/io/atomic_file.h"
 
-#include <array>
-#include <functional>
 #include <iostream>
 
 namespace ab::cli {
 
 namespace {
-
-struct Command {
-    const char* name;
-    const char* usage;
-    int (*fn)(Args&, std::ostream&, std::ostream&);
-};
-
-const std::array commands{
-    Command{"list",
-            "list                      scenes, parameters (unit, default, range, equation), models, integrators",
-            listCommand},
-    Command{"run",
-            "run SCENE [options]       simulate headless and write the trajectory CSV\n"
-            "                            (--meta: `#` lines with the program, settings and constants first)",
-            runCommand},
-    Command{"bench",
-            "bench [options]           cost per ball-step of many-balls (--balls N... --threads T\n"
-            "                            --broadphase grid|all-pairs --model physical|report --steps S\n"
-            "                            --repeats R --out FILE.csv --markdown FILE.md)",
-            benchCommand},
-    Command{"chart",
-            "chart SCENE [options]     the window's chart as PNG, SVG or PDF, headless:\n"
-            "                            --chart position|velocity|energy|momentum|activity|difference\n"
-            "                            --out FILE.png|FILE.svg|FILE.pdf [--ball B] (B = 1 is the first ball)\n"
-            "                            [--size report-column|report-full|slide|WxH|WxHmm] [--dpi N]\n"
-            "                            [--caption] [--compare MODEL[:INTEGRATOR[:IMPACTS]]] [--data FILE.csv]\n"
-            "                            [--width W] [--height H] and the run options",
-            chartCommand},
-    Command{"stability",
-            "stability [--case NAME]... [--out FILE.csv] [--markdown FILE.md] [--list]\n"
-            "                            the stiff and extreme cases, one row per model and integrator",
-            stabilityCommand},
-    Command{"study", "study SCENE [options]     error against run time of the physical model's integrators",
-            studyCommand},
-    Command{"figure",
-            "figure 2.5|2.6|2.7|3.1     the report's figure redrawn from the report model, headless:\n"
-            "                            --out FILE.png|FILE.svg|FILE.pdf [--size report-column|report-full|\n"
-            "                            slide|WxH|WxHmm] [--dpi N] [--width W] [--height H]",
-            figureCommand},
-    Command{"video",
-            "video SCENE [options]     the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL):\n"
-            "                            --out FILE.mp4|FILE.webm|FILE.gif [--size WxH|720p|1080p] [--fps F]\n"
-            "                            [--from S] [--to S] [--speed X] [--charts] [--ball B] [--quiet]\n"
-            "                            and the run options; exit status 4 when there is no OpenGL",
-            videoCommand},
-};
-
-void usage(std::ostream& out)
-{
-    out << "usage: amazeballs-cli COMMAND [ARGS]\n\ncommands:\n";
-    for (const Command& c : commands)
-        out << "  " << c.usage << "\n";
-    out << "\nrun options: [--model report|physical] [--integrator NAME] [--impacts located|step-end]\n"
-           "  [--broadphase grid|all-pairs] [--threads T] [--dt S] [--steps N | --t-end S]\n"
-           "  [--set NAME=VALUE]... [--preset NAME|FILE] [--init FILE] [--every K] [--out FILE] [--summary]\n"
-           "\nstudy options: [--set NAME=VALUE]... [--preset NAME|FILE] [--t-end S] [--dt-max S] [--dt-min S]\n"
-           "  [--per-decade N] [--repeats N] [--impact K] [--out FILE.csv] [--chart FILE.png|FILE.svg]\n"
-           "  [--markdown FILE.md] [--quiet]\n"
-           "A health check follows every step of a run; its worst finding goes to stderr as one line.\n"
-           "Exit status: 0 on success, 2 on bad input (one line on stderr), 1 on an internal error,\n"
-           "  3 when a run's state became non-finite: it stops before that state, and the output (whole and\n"
-           "  valid) holds the states before it; 4 when an output could not be written (disk full, standard\n"
-           "  output closed; a file written before is kept); 5 when `video` finds no OpenGL to draw with (no\n"
-           "  file is written); 130 when interrupted (no file is left).\n";
-}
 
 // Every message is one line: whatever a message quotes, no control character reaches the
 // terminal (quoted input is already escaped; this is the last guard).
@@ -98,18 +34,48 @@ std::string oneLine(std::string_view text)
     return out;
 }
 
-// Runs one command; what it printed is flushed inside, so that a failed write to standard
-// output is reported like any other.
-int dispatch(const Command& c, const std::string& name, const std::vector<std::string>& argv, std::ostream& out,
-             std::ostream& err)
+// Prints what `print` writes on standard output, checked: 0, or 4 when it was not written.
+template <typename Print> int printChecked(const std::string& name, std::ostream& out, std::ostream& err, Print print)
 {
-    Args args(name, std::vector<std::string>(argv.begin() + 1, argv.end()));
     try {
+        print();
+        out.flush();
+    } catch (const OutputError& e) {
+        err << "amazeballs-cli: " << name << ": " << oneLine(e.what()) << "\n";
+        return 4;
+    }
+    return out ? 0 : 4;
+}
+
+// `help [COMMAND]`: the list of commands, or that command's usage.
+int helpCommand(const Parsed& args, std::ostream& out, std::ostream& err)
+{
+    if (const auto name = args.positionalIfGiven()) {
+        const CommandSpec* c = findCommand(*name);
+        if (!c)
+            throw InputError("help: unknown command '" + printableInput(*name) + "'" +
+                             nearOrChoices(*name, commandNames()));
+        return printChecked("help", out, err, [&] { printCommandHelp(*c, out); });
+    }
+    return printChecked("help", out, err, [&] { printUsage(out); });
+}
+
+// Reads the command's arguments and runs it; what it printed is flushed inside, so that a
+// failed write to standard output is reported like any other.
+int dispatch(const CommandSpec& c, const std::vector<std::string>& argv, std::ostream& out, std::ostream& err)
+{
+    const std::string& name = c.name;
+    try {
+        Parsed args = parseCommand(c, std::vector<std::string>(argv.begin() + 1, argv.end()));
+        if (!c.fn)
+            return helpCommand(args, out, err);
         const int status = c.fn(args, out, err);
         out.flush();
         if (!out)
             throw OutputError("standard output: not written (the stream failed)");
         return status;
+    } catch (const HelpRequested&) {
+        return printChecked(name, out, err, [&] { printCommandHelp(c, out); });
     } catch (const Interrupted&) {
         err << "amazeballs-cli: " << name << ": interrupted; no output file was written\n";
         return 130;
@@ -132,25 +98,28 @@ int dispatch(const Command& c, const std::string& name, const std::vector<std::s
 
 int run(const std::vector<std::string>& argv, std::ostream& out, std::ostream& err)
 {
-    if (argv.empty()) {
-        usage(err);
+    TopLevel top;
+    try {
+        top = parseTopLevel(argv);
+    } catch (const InputError& e) {
+        err << "amazeballs-cli: " << oneLine(e.what()) << "\n";
         return 2;
     }
-    const std::string& name = argv.front();
-    if (name == "help" || name == "--help" || name == "-h") {
-        try {
-            usage(out);
-            out.flush();
-        } catch (const OutputError& e) {
-            err << "amazeballs-cli: help: " << oneLine(e.what()) << "\n";
-            return 4;
-        }
-        return out ? 0 : 4;
+    if (top.help)
+        return printChecked("help", out, err, [&] { printUsage(out); });
+    if (top.version)
+        return printChecked("version", out, err, [&] { out << "amazeballs-cli " << AMAZEBALLS_VERSION << "\n"; });
+    if (top.rest.empty()) {
+        err << "amazeballs-cli: missing COMMAND (usage: amazeballs-cli COMMAND [ARGS]; amazeballs-cli --help lists "
+               "the commands)\n";
+        return 2;
     }
-    for (const Command& c : commands)
-        if (name == c.name)
-            return dispatch(c, name, argv, out, err);
-    err << "amazeballs-cli: unknown command '" << printableInput(name) << "' (try: amazeballs-cli help)\n";
+    const std::string& name = top.rest.front();
+    if (const CommandSpec* c = findCommand(name))
+        return dispatch(*c, top.rest, out, err);
+    const std::string near = didYouMean(name, commandNames());
+    err << "amazeballs-cli: unknown command '" << oneLine(printableInput(name)) << "'"
+        << (near.empty() ? " (try: amazeballs-cli --help)" : near) << "\n";
     return 2;
 }
 

@@ -47,7 +47,7 @@ struct Options {
     std::optional<std::string> out, markdown;
 };
 
-Options readOptions(Args& args)
+Options readOptions(Parsed& args)
 {
     Options o;
     for (const std::string& text : args.options("balls")) {
@@ -61,12 +61,12 @@ Options readOptions(Args& args)
     if (const auto text = args.option("broadphase")) {
         o.broadphase = parseBroadphase(*text);
         if (!o.broadphase)
-            throw InputError("--broadphase: unknown value '" + printableInput(*text) + "' (choose grid, all-pairs)");
+            throwUnknownValue("--broadphase", *text, valueWords(Values::Broadphase));
     }
     if (const auto text = args.option("model")) {
         const auto model = parseModel(*text);
         if (!model)
-            throw InputError("--model: unknown value '" + printableInput(*text) + "' (choose physical, report)");
+            throwUnknownValue("--model", *text, valueWords(Values::Model));
         o.model = *model;
     }
     o.threads = static_cast<int>(args.integer("threads", 1, 256).value_or(1));
@@ -74,7 +74,6 @@ Options readOptions(Args& args)
     o.repeats = static_cast<int>(args.integer("repeats", 1, 99).value_or(o.repeats));
     o.out = args.option("out");
     o.markdown = args.option("markdown");
-    args.finish();
     if (o.model == ModelKind::Report && o.threads > 1)
         throw InputError("--threads: the report model updates its balls one after another on one thread; use "
                          "--threads 1 with --model report");
@@ -171,7 +170,7 @@ void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Option
 
 } // namespace
 
-int benchCommand(Args& args, std::ostream& out, std::ostream& err)
+int benchCommand(Parsed& args, std::ostream& out, std::ostream& err)
 {
     const Options o = readOptions(args);
     if (o.out)

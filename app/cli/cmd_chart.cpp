@@ -5,6 +5,7 @@
 // size for where the figure goes, as PNG, SVG or PDF, optionally with a caption; and the
 // chart-data CSV the window writes (--data).
 #include "commands.h"
+#include "suggest.h"
 
 #include "interrupt.h"
 #include "run_setup.h"
@@ -36,18 +37,19 @@ std::string chartKeys()
     return keys;
 }
 
-ui::ChartKind readChartKind(Args& args)
+ui::ChartKind readChartKind(Parsed& args)
 {
     const auto key = args.option("chart");
     if (!key)
         throw InputError("chart: missing --chart (one of " + chartKeys() + ")");
     const auto kind = ui::parseChartKind(*key);
     if (!kind)
-        throw InputError("--chart: unknown chart '" + printableInput(*key) + "' (choose " + chartKeys() + ")");
+        throw InputError("--chart: unknown chart '" + printableInput(*key) + "'" +
+                         nearOrChoices(*key, valueWords(Values::Chart)));
     return *kind;
 }
 
-std::string readImagePath(Args& args)
+std::string readImagePath(Parsed& args)
 {
     const auto path = args.option("out");
     if (!path)
@@ -57,7 +59,7 @@ std::string readImagePath(Args& args)
     return *path;
 }
 
-ui::FigureOptions readFigureOptions(Args& args)
+ui::FigureOptions readFigureOptions(Parsed& args)
 {
     ui::FigureOptions options;
     const auto size = args.option("size");
@@ -78,7 +80,7 @@ ui::FigureOptions readFigureOptions(Args& args)
 }
 
 // MODEL[:INTEGRATOR[:IMPACTS]], as the window's comparison (the main run's step).
-std::optional<RunVariant> readComparison(Args& args)
+std::optional<RunVariant> readComparison(Parsed& args)
 {
     const auto text = args.option("compare");
     if (!text)
@@ -94,18 +96,21 @@ std::optional<RunVariant> readComparison(Args& args)
     RunVariant v;
     const auto model = parseModel(parts[0]);
     if (!model)
-        throw InputError(bad + ": unknown model '" + printableInput(parts[0]) + "' (report or physical)");
+        throw InputError(bad + ": unknown model '" + printableInput(parts[0]) + "'" +
+                         nearOrChoices(parts[0], valueWords(Values::Model)));
     v.model = *model;
     if (parts.size() > 1) {
         const auto integrator = parseIntegrator(parts[1]);
         if (!integrator)
-            throw InputError(bad + ": unknown integrator '" + printableInput(parts[1]) + "'");
+            throw InputError(bad + ": unknown integrator '" + printableInput(parts[1]) + "'" +
+                             nearOrChoices(parts[1], valueWords(Values::Integrator)));
         v.integrator = *integrator;
     }
     if (parts.size() > 2) {
         const auto impacts = parseImpactMode(parts[2]);
         if (!impacts)
-            throw InputError(bad + ": unknown impacts '" + printableInput(parts[2]) + "' (located or step-end)");
+            throw InputError(bad + ": unknown impacts '" + printableInput(parts[2]) + "'" +
+                             nearOrChoices(parts[2], valueWords(Values::Impacts)));
         v.impacts = *impacts;
     }
     return v;
@@ -213,7 +218,7 @@ struct ChartRequest {
 
 // Every option, checked before anything runs (an output that cannot be written, a size
 // too large for a PNG, a chart the scene does not have).
-ChartRequest readRequest(Args& args)
+ChartRequest readRequest(Parsed& args)
 {
     ChartRequest r(readRunSetup(args));
     r.kind = readChartKind(args);
@@ -223,7 +228,6 @@ ChartRequest readRequest(Args& args)
     r.caption = args.flag("caption");
     r.variant = readComparison(args);
     r.dataPath = args.option("data");
-    args.finish();
     if (QFileInfo(QString::fromStdString(r.path)).suffix().toLower() == "png")
         (void)r.options.pngPixels(); // a size too large for a PNG: refused before the run
     if (r.dataPath) {
@@ -237,7 +241,7 @@ ChartRequest readRequest(Args& args)
 
 } // namespace
 
-int chartCommand(Args& args, std::ostream&, std::ostream& err)
+int chartCommand(Parsed& args, std::ostream&, std::ostream& err)
 {
     const ChartRequest request = readRequest(args);
     const RunSetup& setup = request.setup;

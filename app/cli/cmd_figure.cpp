@@ -3,6 +3,7 @@
 // with the report's constants, as PNG, SVG or PDF, headless (QPainter, no OpenGL), at a
 // size preset (--size, --dpi) or in pixels (--width, --height).
 #include "commands.h"
+#include "suggest.h"
 
 #include "../../core/io/atomic_file.h"
 #include "../../ui/charts/chart_export.h"
@@ -27,12 +28,13 @@ std::string figureNumbers()
 
 } // namespace
 
-int figureCommand(Args& args, std::ostream&, std::ostream&)
+int figureCommand(Parsed& args, std::ostream&, std::ostream&)
 {
     const std::string number = args.positional("figure number (" + figureNumbers() + ")");
     const auto figure = ui::parseReportFigure(number);
     if (!figure)
-        throw InputError("figure: unknown figure '" + printableInput(number) + "' (choose " + figureNumbers() + ")");
+        throw InputError("figure: unknown figure '" + printableInput(number) + "'" +
+                         nearOrChoices(number, valueWords(Values::Figure)));
     const auto path = args.option("out");
     if (!path)
         throw InputError("figure: missing --out FILE.png, FILE.svg or FILE.pdf");
@@ -43,7 +45,6 @@ int figureCommand(Args& args, std::ostream&, std::ostream&)
     if (size && (width || height))
         throw InputError("--size: give either --size or --width/--height, not both");
     const auto dpi = args.integer("dpi", std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max());
-    args.finish();
     if (dpi)
         ui::checkDpi(*dpi);
     std::optional<ui::FigureOptions> options;

@@ -55,9 +55,8 @@ void listScene(const SceneInfo& s, std::ostream& out)
 
 } // namespace
 
-int listCommand(Args& args, std::ostream& out, std::ostream&)
+int listCommand(Parsed&, std::ostream& out, std::ostream&)
 {
-    args.finish();
     out << "Scenes (the report's four stages, in order). Set a parameter with --set NAME=VALUE;\n"
            "vectors as x,y,z. Ranges are inclusive; '(' marks an exclusive lower bound.\n\n";
     for (const SceneInfo* s : allScenes())

@@ -92,14 +92,13 @@ int reportHealth(const diagnostics::HealthCheck& health, bool diverged, const St
 
 } // namespace
 
-int runCommand(Args& args, std::ostream& out, std::ostream& err)
+int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
 {
     const RunSetup setup = readRunSetup(args);
     const long long every = args.integer("every", 1, 1'000'000'000'000LL).value_or(1);
     const auto outPath = args.option("out");
     const bool summary = args.flag("summary");
     const bool meta = args.flag("meta");
-    args.finish();
 
     const auto sim = makeSimulation(setup.spec);
     if (outPath)

@@ -2,6 +2,7 @@
 // `stability`: the suite of stiff and extreme cases (core/stability), as a table on
 // stdout and, on request, CSV and markdown files.
 #include "commands.h"
+#include "suggest.h"
 
 #include "interrupt.h"
 
@@ -14,21 +15,14 @@ namespace ab::cli {
 
 namespace {
 
-std::string caseNames()
-{
-    std::string names;
-    for (const stability::StabilityCase& c : stability::stabilityCases())
-        names += (names.empty() ? "" : ", ") + c.name;
-    return names;
-}
-
 std::vector<const stability::StabilityCase*> selectedCases(const std::vector<std::string>& names)
 {
     std::vector<const stability::StabilityCase*> cases;
     for (const std::string& name : names) {
         const stability::StabilityCase* c = stability::findCase(name);
         if (!c)
-            throw InputError("--case: unknown case '" + printableInput(name) + "' (choose " + caseNames() + ")");
+            throw InputError("--case: unknown case '" + printableInput(name) + "'" +
+                             nearOrChoices(name, valueWords(Values::Case)));
         cases.push_back(c);
     }
     if (names.empty())
@@ -59,13 +53,12 @@ void printTally(std::ostream& out, const std::vector<stability::RowResult>& rows
 
 } // namespace
 
-int stabilityCommand(Args& args, std::ostream& out, std::ostream&)
+int stabilityCommand(Parsed& args, std::ostream& out, std::ostream&)
 {
     const std::vector<std::string> names = args.options("case");
     const auto csvPath = args.option("out");
     const auto markdownPath = args.option("markdown");
     const bool list = args.flag("list");
-    args.finish();
     const auto cases = selectedCases(names);
     if (list) {
         for (const stability::StabilityCase* c : cases)

@@ -6,6 +6,7 @@
 #include "commands.h"
 
 #include "interrupt.h"
+#include "run_setup.h"
 
 #include "../../core/io/atomic_file.h"
 #include "../../core/io/preset.h"
@@ -25,30 +26,19 @@ namespace ab::cli {
 
 namespace {
 
-std::string sceneKeys()
+RunSpec readScene(Parsed& args)
 {
-    std::string keys;
-    for (const SceneInfo* s : allScenes())
-        keys += (keys.empty() ? "" : ", ") + s->key;
-    return keys;
-}
-
-RunSpec readScene(Args& args)
-{
-    const std::string key = args.positional("SCENE (one of " + sceneKeys() + ")");
-    const SceneInfo* info = findScene(key);
-    if (!info)
-        throw InputError("unknown scene '" + key + "' (choose " + sceneKeys() + ")");
+    const SceneInfo* info = readSceneOperand(args);
     RunSpec spec(info->id);
     if (const auto preset = args.option("preset"))
         applyPreset(loadPreset(*preset), spec);
     for (const std::string& assignment : args.options("set"))
-        spec.params.parseAssignment(assignment);
+        applyAssignment(spec, assignment);
     spec.model = ModelKind::Physical;
     return spec;
 }
 
-double positiveOption(Args& args, const std::string& name, double fallback)
+double positiveOption(Parsed& args, const std::string& name, double fallback)
 {
     const auto value = args.real(name);
     if (value && !(*value > 0.0))
@@ -56,7 +46,7 @@ double positiveOption(Args& args, const std::string& name, double fallback)
     return value.value_or(fallback);
 }
 
-void readSweep(Args& args, study::Options& o)
+void readSweep(Parsed& args, study::Options& o)
 {
     o.tEnd = positiveOption(args, "t-end", o.tEnd);
     const double dtMax = positiveOption(args, "dt-max", o.dts.front());
@@ -95,7 +85,7 @@ void reportRow(std::ostream& err, const std::string& scene, std::size_t done, st
 
 } // namespace
 
-int studyCommand(Args& args, std::ostream& out, std::ostream& err)
+int studyCommand(Parsed& args, std::ostream& out, std::ostream& err)
 {
     const RunSpec spec = readScene(args);
     study::Options options = study::defaultOptions(spec); // refuses scenes without a closed form
@@ -104,7 +94,6 @@ int studyCommand(Args& args, std::ostream& out, std::ostream& err)
     const auto chartPath = args.option("chart");
     const auto markdownPath = args.option("markdown");
     const bool quiet = args.flag("quiet");
-    args.finish();
     if (csvPath)
         checkWritable(*csvPath); // fail now, not after the study
     if (markdownPath)

@@ -34,7 +34,7 @@ video::VideoFormat readFormat(const std::string& path)
     return *format;
 }
 
-void readSize(Args& args, video::VideoSettings& s)
+void readSize(Parsed& args, video::VideoSettings& s)
 {
     const auto text = args.option("size");
     if (!text || *text == "720p") {
@@ -115,7 +115,7 @@ private:
 
 } // namespace
 
-int videoCommand(Args& args, std::ostream&, std::ostream& err)
+int videoCommand(Parsed& args, std::ostream&, std::ostream& err)
 {
     const RunSetup setup = readRunSetup(args);
     const auto out = args.option("out");
@@ -133,7 +133,6 @@ int videoCommand(Args& args, std::ostream&, std::ostream& err)
     const auto ball = args.integer("ball", 1, 4'000'000);
     request.ball = int(ball.value_or(1) - 1);
     const bool quiet = args.flag("quiet");
-    args.finish();
     applyPresetView(setup, request, ball.has_value());
 
     const ui::AnimationPlan plan = ui::planAnimation(request); // bad input: before any GL or file

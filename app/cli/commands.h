@@ -2,19 +2,19 @@
 // One function per command; cli.cpp dispatches on the first argument.
 #pragma once
 
-#include "args.h"
+#include "parsed.h"
 
 #include <iosfwd>
 
 namespace ab::cli {
 
-int listCommand(Args& args, std::ostream& out, std::ostream& err);
-int runCommand(Args& args, std::ostream& out, std::ostream& err);
-int stabilityCommand(Args& args, std::ostream& out, std::ostream& err);
-int studyCommand(Args& args, std::ostream& out, std::ostream& err);
-int chartCommand(Args& args, std::ostream& out, std::ostream& err);
-int benchCommand(Args& args, std::ostream& out, std::ostream& err);
-int figureCommand(Args& args, std::ostream& out, std::ostream& err);
-int videoCommand(Args& args, std::ostream& out, std::ostream& err);
+int listCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int runCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int stabilityCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int studyCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int chartCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int benchCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int figureCommand(Parsed& args, std::ostream& out, std::ostream& err);
+int videoCommand(Parsed& args, std::ostream& out, std::ostream& err);
 
 } // namespace ab::cli

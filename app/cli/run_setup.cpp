@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "run_setup.h"
 
+#include "suggest.h"
+
 #include "../../core/io/preset.h"
 #include "../../core/io/trajectory_csv.h"
 
@@ -10,24 +12,16 @@ namespace ab::cli {
 
 namespace {
 
-std::string sceneKeys()
-{
-    std::string keys;
-    for (const SceneInfo* s : allScenes())
-        keys += (keys.empty() ? "" : ", ") + s->key;
-    return keys;
-}
-
 template <typename E>
-E readEnum(Args& args, const std::string& name, std::optional<E> (*parse)(std::string_view), E fallback,
-           const char* choices)
+E readEnum(Parsed& args, const std::string& name, std::optional<E> (*parse)(std::string_view), E fallback,
+           Values choices)
 {
     const auto text = args.option(name);
     if (!text)
         return fallback;
     const auto value = parse(*text);
     if (!value)
-        throw InputError("--" + name + ": unknown value '" + printableInput(*text) + "' (choose " + choices + ")");
+        throwUnknownValue("--" + name, *text, valueWords(choices));
     return *value;
 }
 
@@ -44,7 +38,7 @@ constexpr long long kMaxSteps = 4'000'000'000LL;
 
 // The run's length: --steps, or the whole steps of --dt to reach --t-end, or the preset's
 // or scene's; a length of no step, or of more than kMaxSteps, is refused.
-long long readSteps(Args& args, const RunSpec& spec, std::optional<long long> presetSteps)
+long long readSteps(Parsed& args, const RunSpec& spec, std::optional<long long> presetSteps)
 {
     const auto steps = args.integer("steps", 1, kMaxSteps);
     const auto tEnd = args.real("t-end");
@@ -75,12 +69,34 @@ long long readSteps(Args& args, const RunSpec& spec, std::optional<long long> pr
 
 } // namespace
 
-RunSetup readRunSetup(Args& args)
+const SceneInfo* readSceneOperand(Parsed& args)
 {
-    const std::string sceneKey = args.positional("SCENE (one of " + sceneKeys() + ")");
-    const SceneInfo* info = findScene(sceneKey);
+    const std::vector<std::string> keys = valueWords(Values::Scene);
+    const std::string key = args.positional("SCENE (one of " + joined(keys) + ")");
+    const SceneInfo* info = findScene(key);
     if (!info)
-        throw InputError("unknown scene '" + printableInput(sceneKey) + "' (choose " + sceneKeys() + ")");
+        throw InputError("unknown scene '" + printableInput(key) + "'" + nearOrChoices(key, keys));
+    return info;
+}
+
+void applyAssignment(RunSpec& spec, const std::string& assignment)
+{
+    const auto eq = assignment.find('=');
+    const std::string name(trimmed(std::string_view(assignment).substr(0, eq)));
+    if (eq != std::string::npos && !name.empty() && !spec.params.indexOf(name)) {
+        std::vector<std::string> names;
+        for (const ParamSpec& p : sceneInfo(spec.scene).params)
+            names.push_back(p.key);
+        const std::string near = didYouMean(name, names);
+        throw InputError("--set: unknown parameter '" + printableInput(name) + "' for " + sceneInfo(spec.scene).key +
+                         (near.empty() ? " (amazeballs-cli list names them)" : near));
+    }
+    spec.params.parseAssignment(assignment);
+}
+
+RunSetup readRunSetup(Parsed& args)
+{
+    const SceneInfo* info = readSceneOperand(args);
     RunSetup setup{RunSpec(info->id), 0, std::nullopt};
     RunSpec& spec = setup.spec;
 
@@ -91,13 +107,10 @@ RunSetup readRunSetup(Args& args)
         presetSteps = p.steps;
         setup.presetKey = *preset;
     }
-    spec.model = readEnum(args, "model", parseModel, spec.model, "report, physical");
-    std::string integrators;
-    for (Integrator i : allIntegrators())
-        integrators += (integrators.empty() ? "" : ", ") + std::string(integratorKey(i));
-    spec.integrator = readEnum(args, "integrator", parseIntegrator, spec.integrator, integrators.c_str());
-    spec.impacts = readEnum(args, "impacts", parseImpactMode, spec.impacts, "located, step-end");
-    spec.broadphase = readEnum(args, "broadphase", parseBroadphase, spec.broadphase, "grid, all-pairs");
+    spec.model = readEnum(args, "model", parseModel, spec.model, Values::Model);
+    spec.integrator = readEnum(args, "integrator", parseIntegrator, spec.integrator, Values::Integrator);
+    spec.impacts = readEnum(args, "impacts", parseImpactMode, spec.impacts, Values::Impacts);
+    spec.broadphase = readEnum(args, "broadphase", parseBroadphase, spec.broadphase, Values::Broadphase);
     if (const auto t = args.integer("threads", 1, 256))
         spec.threads = static_cast<int>(*t);
     if (const auto dt = args.real("dt")) {
@@ -107,7 +120,7 @@ RunSetup readRunSetup(Args& args)
     }
     std::optional<std::string> setN; // the --set that gave n, if one did
     for (const std::string& assignment : args.options("set")) {
-        spec.params.parseAssignment(assignment);
+        applyAssignment(spec, assignment);
         if (const auto eq = assignment.find('='); trimmed(assignment.substr(0, eq)) == "n")
             setN = assignment;
     }

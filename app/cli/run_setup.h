@@ -3,7 +3,7 @@
 // integrator, step, parameters, preset and start state, read into a RunSpec.
 #pragma once
 
-#include "args.h"
+#include "parsed.h"
 
 #include "../../core/simulation.h"
 
@@ -15,7 +15,13 @@ struct RunSetup {
     std::optional<std::string> presetKey;
 };
 
+// The scene the operand names; InputError (with the nearest keys) for an unknown one.
+const SceneInfo* readSceneOperand(Parsed& args);
+// One --set NAME=VALUE into the spec's parameters; an unknown NAME is refused with the
+// scene's nearest parameter names.
+void applyAssignment(RunSpec& spec, const std::string& assignment);
+
 // Reads SCENE and the run options from `args` (removing them); throws InputError.
-RunSetup readRunSetup(Args& args);
+RunSetup readRunSetup(Parsed& args);
 
 } // namespace ab::cli

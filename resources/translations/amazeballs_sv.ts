@@ -2711,5 +2711,9 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>--measure-frames: %1 is outside [1, 3600] seconds</source>
         <translation>--measure-frames: %1 ligger utanför [1, 3600] sekunder</translation>
     </message>
+    <message>
+        <source> (did you mean %1?)</source>
+        <translation> (menade du %1?)</translation>
+    </message>
 </context>
 </TS>

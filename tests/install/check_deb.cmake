@@ -2,11 +2,11 @@
 # Makes the Debian package from the built tree with `cpack -G DEB` into a fresh folder and
 # reads it back with dpkg-deb: its control fields, that it holds exactly the files
 # `cmake --install` installs (so whatever install rule the tree gains is packaged too),
-# among them the programs, desktop entry, icon, metainfo and copyright, and that the
-# packaged amazeballs-cli runs. cpack first brings the tree up to date (its preinstall
-# step), which on a built tree is only make's check.
-# Run as: cmake -DBUILD_DIR=... -DOUT=... -DVERSION=... -DMETAINFO_NAME=... -DCPACK=...
-#               -DDPKG_DEB=... -DDPKG=... -DOBJDUMP=... -P check_deb.cmake
+# among them the programs, desktop entry, icon, metainfo, copyright, man pages and bash and
+# zsh completions, and that the packaged amazeballs-cli runs. cpack first brings the tree
+# up to date (its preinstall step), which on a built tree is only make's check.
+# Run as: cmake -DBUILD_DIR=... -DOUT=... -DVERSION=... -DMETAINFO_NAME=... -DMAN_SUFFIX=...
+#               -DCPACK=... -DDPKG_DEB=... -DDPKG=... -DOBJDUMP=... -P check_deb.cmake
 cmake_minimum_required(VERSION 3.22)
 foreach(program amazeballs amazeballs-cli)
   if(NOT EXISTS "${BUILD_DIR}/app/${program}")
@@ -96,7 +96,10 @@ foreach(row IN LISTS rows)
 endforeach()
 foreach(f bin/amazeballs bin/amazeballs-cli share/applications/amazeballs.desktop
           share/icons/hicolor/scalable/apps/amazeballs.svg share/metainfo/${METAINFO_NAME}
-          share/doc/amazeballs/copyright)
+          share/doc/amazeballs/copyright share/man/man1/amazeballs.1${MAN_SUFFIX}
+          share/man/man1/amazeballs-cli.1${MAN_SUFFIX} share/bash-completion/completions/amazeballs
+          share/bash-completion/completions/amazeballs-cli share/zsh/vendor-completions/_amazeballs
+          share/zsh/vendor-completions/_amazeballs-cli)
   if(NOT f IN_LIST packaged)
     message(FATAL_ERROR "${deb} lacks /usr/${f}; it holds:\n${listing}")
   endif()

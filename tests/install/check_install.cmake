@@ -2,7 +2,8 @@
 # Installs the build into a fresh prefix and checks what a Linux desktop needs: the
 # programs in bin, the .desktop entry whose Exec and Icon name them, and the icon in the
 # hicolor theme, and the AppStream metainfo that launches that entry and provides both
-# programs. Run as: cmake -DBUILD_DIR=... -DPREFIX=... [-DVALIDATE=...] -P check_install.cmake
+# programs, and the man pages and shell completions.
+# Run as: cmake -DBUILD_DIR=... -DPREFIX=... [-DVALIDATE=...] -P check_install.cmake
 file(REMOVE_RECURSE "${PREFIX}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${PREFIX}"
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -49,4 +50,12 @@ if(VALIDATE)
     message(FATAL_ERROR "desktop-file-validate: ${out}")
   endif()
 endif()
-message(STATUS "installed: programs, desktop entry, icon and metainfo in ${PREFIX}")
+# The man pages where man finds them, the completions where bash-completion and zsh do.
+foreach(program amazeballs amazeballs-cli)
+  file(GLOB man "${PREFIX}/share/man/man1/${program}.1" "${PREFIX}/share/man/man1/${program}.1.gz")
+  if(NOT man OR NOT EXISTS "${PREFIX}/share/bash-completion/completions/${program}"
+     OR NOT EXISTS "${PREFIX}/share/zsh/vendor-completions/_${program}")
+    message(FATAL_ERROR "${program}: man page or shell completion not installed under ${PREFIX}/share")
+  endif()
+endforeach()
+message(STATUS "installed: programs, desktop entry, icon, metainfo, man pages and completions in ${PREFIX}")
