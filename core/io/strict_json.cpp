@@ -106,7 +106,7 @@ public:
         return true;
     }
 
-    bool parse_error(std::size_t position, const std::string& lastToken, const nlohmann::detail::exception& ex)
+    bool parse_error(std::size_t position, const std::string& lastToken, const Document::exception& ex)
     {
         if (ex.id == 406) // out_of_range.406: nlohmann's strtod gave an infinity
             failAt(position - lastToken.size(), outOfRange(lastToken));
