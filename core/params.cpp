@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "params.h"
 
-#include "io/json.h"
-
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace ab {
 
@@ -194,9 +193,51 @@ std::optional<std::size_t> ParamValues::indexOf(std::string_view key) const
     return std::nullopt;
 }
 
-std::string printableInput(std::string_view text)
+namespace {
+
+// The length of the valid UTF-8 sequence at text[i], or 0 when the byte starts none.
+std::size_t utf8Length(std::string_view text, std::size_t i)
 {
-    return json::printable(text);
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char b = byte(i);
+    const std::size_t n = b < 0x80 ? 1 : (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xE ? 3 : (b >> 3) == 0x1E ? 4 : 0;
+    if (n == 0 || i + n > text.size())
+        return 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if ((byte(i + k) & 0xC0) != 0x80)
+            return 0;
+    if (n == 2 && b < 0xC2)
+        return 0; // overlong
+    return n;
+}
+
+} // namespace
+
+std::string printableInput(std::string_view text, std::size_t max)
+{
+    std::string out;
+    std::size_t chars = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        if (chars == max)
+            return out + "\xE2\x80\xA6"; // "…", the cut
+        ++chars;
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const std::size_t n = utf8Length(text, i);
+        char buf[8];
+        if (c == '\n' || c == '\t' || c == '\r') {
+            out += c == '\n' ? "\\n" : c == '\t' ? "\\t" : "\\r";
+        } else if (n == 0 || c < 0x20 || c == 0x7F) {
+            std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(c)); // a control or a stray byte
+            out += buf;
+        } else if (n == 2 && c == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) {
+            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(text[i + 1]) & 0xFFu); // C1 control
+            out += buf;
+        } else {
+            out.append(text.substr(i, n));
+        }
+        i += n == 0 ? 1 : n;
+    }
+    return out;
 }
 
 const ParamSpec& ParamValues::spec(std::string_view key) const

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -79,9 +80,11 @@ double parseReal(std::string_view text, std::string_view what);
 long long parseInteger(std::string_view text, std::string_view what);
 Eigen::Vector3d parseVector(std::string_view text, std::string_view what);
 
-// User text made safe to quote in a one-line message: control characters escaped, long
-// text cut (see json::printable).
-std::string printableInput(std::string_view text);
+// Text from a file or a command line made safe to quote in a one-line message: newline,
+// tab and return as \n \t \r, other control characters and bytes that are not UTF-8 as
+// \xNN (so no terminal escape sequence passes), C1 controls as \u0080..\u009f; cut after
+// `max` characters with "…".
+std::string printableInput(std::string_view text, std::size_t max = 80);
 
 // Checks one value against its spec without storing it; returns the error text or nothing.
 std::optional<std::string> checkValue(const ParamSpec& spec, const Eigen::Vector3d& value);

@@ -35,7 +35,7 @@
 #include "atomic_file.h"
 #include "embedded_presets.h"
 #include "input_file.h"
-#include "json.h"
+#include "strict_json.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -48,7 +48,8 @@ namespace ab {
 
 namespace {
 
-using json::Value;
+using json::Document;
+using Kind = Document::value_t;
 
 constexpr std::string_view formatTag = "amazeballs-preset";
 constexpr long long maxSteps = 4'000'000'000LL; // as `run --steps`
@@ -60,7 +61,7 @@ struct Where {
 
     Where operator/(std::string_view key) const
     {
-        const std::string shownKey = json::printable(key); // a key may hold anything
+        const std::string shownKey = printableInput(key); // a key may hold anything
         return {origin, path.empty() ? shownKey : path + "." + shownKey};
     }
     Where operator[](std::size_t i) const { return {origin, path + "[" + std::to_string(i) + "]"}; }
@@ -81,44 +82,60 @@ std::string joined(const std::vector<std::string>& words)
 
 // ---- Reading: types --------------------------------------------------------------------
 
-void expectKind(const Value& v, Value::Kind kind, const Where& at)
+// Every number the reader makes is a double; a number of another kind is still a number.
+void expectKind(const Document& v, Kind kind, const Where& at)
 {
-    if (v.kind != kind)
-        at.fail("expected " + std::string(json::kindName(kind)) + ", found " + std::string(json::kindName(v.kind)));
+    if (v.type() != kind && !(kind == Kind::number_float && v.is_number()))
+        at.fail("expected " + std::string(json::kindName(kind)) + ", found " + std::string(json::kindName(v.type())));
+}
+
+const Document::object_t& members(const Document& v)
+{
+    return v.get_ref<const Document::object_t&>();
+}
+
+// The member's value, or nullptr (a linear search, as the keys are few but for hostile text,
+// which fails at its first unknown key).
+const Document* find(const Document& obj, std::string_view key)
+{
+    for (const auto& [k, value] : members(obj))
+        if (k == key)
+            return &value;
+    return nullptr;
 }
 
 // An object whose keys are all in `known`.
-void checkObject(const Value& v, const Where& at, std::initializer_list<std::string_view> known)
+void checkObject(const Document& v, const Where& at, std::initializer_list<std::string_view> known)
 {
-    expectKind(v, Value::Kind::Object, at);
-    for (const json::Member& m : v.members) {
-        if (std::find(known.begin(), known.end(), m.key) != known.end())
+    expectKind(v, Kind::object, at);
+    for (const auto& [key, value] : members(v)) {
+        if (std::find(known.begin(), known.end(), key) != known.end())
             continue;
         std::vector<std::string> names(known.begin(), known.end());
-        (at / m.key).fail("unknown key (known here: " + joined(names) + ")");
+        (at / key).fail("unknown key (known here: " + joined(names) + ")");
     }
 }
 
-const Value& required(const Value& obj, std::string_view key, const Where& at)
+const Document& required(const Document& obj, std::string_view key, const Where& at)
 {
-    if (const Value* v = obj.find(key))
+    if (const Document* v = find(obj, key))
         return *v;
     at.fail("missing field '" + std::string(key) + "'");
 }
 
-const std::string& text(const Value& v, const Where& at)
+const std::string& text(const Document& v, const Where& at)
 {
-    expectKind(v, Value::Kind::String, at);
-    return v.text;
+    expectKind(v, Kind::string, at);
+    return v.get_ref<const std::string&>();
 }
 
-double number(const Value& v, const Where& at)
+double number(const Document& v, const Where& at)
 {
-    expectKind(v, Value::Kind::Number, at);
-    return v.number; // finite: the JSON reader refuses anything else
+    expectKind(v, Kind::number_float, at);
+    return v.get<double>(); // finite: the JSON reader refuses anything else
 }
 
-long long whole(const Value& v, const Where& at, double min, double max)
+long long whole(const Document& v, const Where& at, double min, double max)
 {
     const double x = number(v, at);
     if (x != std::floor(x))
@@ -128,23 +145,23 @@ long long whole(const Value& v, const Where& at, double min, double max)
     return static_cast<long long>(x);
 }
 
-Eigen::Vector3d vector3(const Value& v, const Where& at)
+Eigen::Vector3d vector3(const Document& v, const Where& at)
 {
-    if (v.kind != Value::Kind::Array || v.items.size() != 3)
+    if (!v.is_array() || v.size() != 3)
         at.fail("expected an array of 3 numbers [x, y, z]");
     Eigen::Vector3d out;
     for (int i = 0; i < 3; ++i)
-        out[i] = number(v.items[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(i)]);
+        out[i] = number(v[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(i)]);
     return out;
 }
 
 template <typename E>
-E key(const Value& v, const Where& at, std::optional<E> (*parse)(std::string_view), const std::string& choices)
+E key(const Document& v, const Where& at, std::optional<E> (*parse)(std::string_view), const std::string& choices)
 {
     const std::string& k = text(v, at);
     if (const auto e = parse(k))
         return *e;
-    at.fail("unknown value '" + json::printable(k) + "' (choose " + choices + ")");
+    at.fail("unknown value '" + printableInput(k) + "' (choose " + choices + ")");
 }
 
 std::optional<SceneId> sceneByKey(std::string_view k)
@@ -173,11 +190,11 @@ std::string integratorChoices()
 
 // Format and version come first, so a newer file is named as such before any key it adds
 // is called unknown.
-void readHeader(const Value& doc, const Where& root)
+void readHeader(const Document& doc, const Where& root)
 {
-    expectKind(doc, Value::Kind::Object, root);
-    const Value& format = required(doc, "format", root);
-    if (format.kind != Value::Kind::String || format.text != formatTag)
+    expectKind(doc, Kind::object, root);
+    const Document& format = required(doc, "format", root);
+    if (!format.is_string() || format.get_ref<const std::string&>() != formatTag)
         (root / "format").fail("this is not an Amazeballs preset (expected \"" + std::string(formatTag) + "\")");
     const Where at = root / "version";
     const double version = number(required(doc, "version", root), at);
@@ -196,63 +213,64 @@ const ParamSpec* findParam(const SceneInfo& info, std::string_view name)
     return spec == info.params.end() ? nullptr : &*spec;
 }
 
-std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Value& v, const Where& at, const SceneInfo& info)
+std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Document& v, const Where& at,
+                                                                const SceneInfo& info)
 {
-    expectKind(v, Value::Kind::Object, at);
+    expectKind(v, Kind::object, at);
     std::vector<std::pair<std::string, Eigen::Vector3d>> params;
-    for (const json::Member& m : v.members) {
-        const Where here = at / m.key;
-        const ParamSpec* spec = findParam(info, m.key);
+    for (const auto& [name, value] : members(v)) {
+        const Where here = at / name;
+        const ParamSpec* spec = findParam(info, name);
         if (!spec) {
             std::vector<std::string> names;
             for (const ParamSpec& s : info.params)
                 names.push_back(s.key);
             here.fail("unknown parameter of " + info.key + " (known: " + joined(names) + ")");
         }
-        const Eigen::Vector3d value =
-            spec->kind == ParamKind::Vector ? vector3(m.value, here) : Eigen::Vector3d(number(m.value, here), 0, 0);
+        const Eigen::Vector3d x =
+            spec->kind == ParamKind::Vector ? vector3(value, here) : Eigen::Vector3d(number(value, here), 0, 0);
         // A double holds every whole number up to 2^53 - 1; beyond, the text was rounded.
-        if (spec->kind == ParamKind::Integer && std::abs(value[0]) > 9007199254740991.0)
-            here.fail(formatNumber(value[0]) + " is beyond 2^53 - 1 = 9007199254740991, the largest whole number "
-                                               "kept exactly");
-        params.emplace_back(m.key, value);
+        if (spec->kind == ParamKind::Integer && std::abs(x[0]) > 9007199254740991.0)
+            here.fail(formatNumber(x[0]) + " is beyond 2^53 - 1 = 9007199254740991, the largest whole number "
+                                           "kept exactly");
+        params.emplace_back(name, x);
     }
     return params;
 }
 
-PresetView readView(const Value& v, const Where& at)
+PresetView readView(const Document& v, const Where& at)
 {
     checkObject(v, at, {"camera", "charts", "selected_ball", "compare"});
     PresetView view;
-    if (const Value* camera = v.find("camera")) {
+    if (const Document* camera = find(v, "camera")) {
         const Where c = at / "camera";
         checkObject(*camera, c, {"yaw", "pitch", "distance", "target"});
-        if (const Value* x = camera->find("yaw"))
+        if (const Document* x = find(*camera, "yaw"))
             view.cameraYaw = number(*x, c / "yaw");
-        if (const Value* x = camera->find("pitch"))
+        if (const Document* x = find(*camera, "pitch"))
             view.cameraPitch = number(*x, c / "pitch");
-        if (const Value* x = camera->find("distance"))
+        if (const Document* x = find(*camera, "distance"))
             view.cameraDistance = number(*x, c / "distance");
-        if (const Value* x = camera->find("target"))
+        if (const Document* x = find(*camera, "target"))
             view.cameraTarget = vector3(*x, c / "target");
     }
-    if (const Value* charts = v.find("charts")) {
-        expectKind(*charts, Value::Kind::Array, at / "charts");
-        for (std::size_t i = 0; i < charts->items.size(); ++i)
-            view.charts.push_back(text(charts->items[i], (at / "charts")[i]));
+    if (const Document* charts = find(v, "charts")) {
+        expectKind(*charts, Kind::array, at / "charts");
+        for (std::size_t i = 0; i < charts->size(); ++i)
+            view.charts.push_back(text((*charts)[i], (at / "charts")[i]));
     }
-    if (const Value* ball = v.find("selected_ball"))
+    if (const Document* ball = find(v, "selected_ball"))
         view.selectedBall = static_cast<int>(whole(*ball, at / "selected_ball", 0, 1e9));
-    if (const Value* compare = v.find("compare")) {
+    if (const Document* compare = find(v, "compare")) {
         const Where c = at / "compare";
         checkObject(*compare, c, {"model", "integrator", "impacts", "dt"});
         RunVariant variant;
         variant.model = key<ModelKind>(required(*compare, "model", c), c / "model", parseModel, "report, physical");
-        if (const Value* x = compare->find("integrator"))
+        if (const Document* x = find(*compare, "integrator"))
             variant.integrator = key<Integrator>(*x, c / "integrator", parseIntegrator, integratorChoices());
-        if (const Value* x = compare->find("impacts"))
+        if (const Document* x = find(*compare, "impacts"))
             variant.impacts = key<ImpactMode>(*x, c / "impacts", parseImpactMode, "located, step-end");
-        if (const Value* x = compare->find("dt"))
+        if (const Document* x = find(*compare, "dt"))
             variant.dt = number(*x, c / "dt");
         view.compare = variant;
     }
@@ -287,11 +305,11 @@ void checkView(const PresetView& view, const Where& at, long long ballCount)
     for (std::size_t i = 0; i < view.charts.size(); ++i) {
         const std::string& chart = view.charts[i];
         if (!isChartKey(chart))
-            (at / "charts")[i].fail("unknown chart '" + json::printable(chart) + "' (choose " +
+            (at / "charts")[i].fail("unknown chart '" + printableInput(chart) + "' (choose " +
                                     joined(presetChartKeys()) + ")");
         if (std::find(view.charts.begin(), view.charts.begin() + static_cast<std::ptrdiff_t>(i), chart) !=
             view.charts.begin() + static_cast<std::ptrdiff_t>(i))
-            (at / "charts")[i].fail("'" + json::printable(chart) + "' is listed twice");
+            (at / "charts")[i].fail("'" + printableInput(chart) + "' is listed twice");
     }
     if (view.selectedBall && (*view.selectedBall < 0 || *view.selectedBall >= ballCount))
         (at / "selected_ball")
@@ -340,81 +358,78 @@ ParamValues checkPreset(const Preset& p, const std::string& origin)
 
 // ---- Writing ---------------------------------------------------------------------------
 
-Value vectorValue(const Eigen::Vector3d& v)
+// Numbers are written as doubles, as the reader makes them.
+Document vectorValue(const Eigen::Vector3d& v)
 {
-    return Value::makeArray({Value::makeNumber(v.x()), Value::makeNumber(v.y()), Value::makeNumber(v.z())});
+    return Document::array({v.x(), v.y(), v.z()});
 }
 
-Value viewValue(const PresetView& view)
+Document viewValue(const PresetView& view)
 {
-    Value camera = Value::makeObject();
+    Document camera = Document::object();
     if (view.cameraYaw)
-        camera.add("yaw", Value::makeNumber(*view.cameraYaw));
+        camera["yaw"] = *view.cameraYaw;
     if (view.cameraPitch)
-        camera.add("pitch", Value::makeNumber(*view.cameraPitch));
+        camera["pitch"] = *view.cameraPitch;
     if (view.cameraDistance)
-        camera.add("distance", Value::makeNumber(*view.cameraDistance));
+        camera["distance"] = *view.cameraDistance;
     if (view.cameraTarget)
-        camera.add("target", vectorValue(*view.cameraTarget));
-    Value out = Value::makeObject();
-    if (!camera.members.empty())
-        out.add("camera", std::move(camera));
-    if (!view.charts.empty()) {
-        std::vector<Value> charts;
-        for (const std::string& c : view.charts)
-            charts.push_back(Value::makeString(c));
-        out.add("charts", Value::makeArray(std::move(charts)));
-    }
+        camera["target"] = vectorValue(*view.cameraTarget);
+    Document out = Document::object();
+    if (!camera.empty())
+        out["camera"] = std::move(camera);
+    if (!view.charts.empty())
+        out["charts"] = view.charts;
     if (view.selectedBall)
-        out.add("selected_ball", Value::makeNumber(*view.selectedBall));
+        out["selected_ball"] = static_cast<double>(*view.selectedBall);
     if (view.compare) {
-        Value compare = Value::makeObject();
-        compare.add("model", Value::makeString(std::string(modelKey(view.compare->model))))
-            .add("integrator", Value::makeString(std::string(integratorKey(view.compare->integrator))))
-            .add("impacts", Value::makeString(std::string(impactModeKey(view.compare->impacts))));
+        Document compare = Document::object();
+        compare["model"] = std::string(modelKey(view.compare->model));
+        compare["integrator"] = std::string(integratorKey(view.compare->integrator));
+        compare["impacts"] = std::string(impactModeKey(view.compare->impacts));
         if (view.compare->dt)
-            compare.add("dt", Value::makeNumber(*view.compare->dt));
-        out.add("compare", std::move(compare));
+            compare["dt"] = *view.compare->dt;
+        out["compare"] = std::move(compare);
     }
     return out;
 }
 
-Value presetValue(const Preset& p)
+Document presetValue(const Preset& p)
 {
     const SceneInfo& info = sceneInfo(p.scene);
-    Value doc = Value::makeObject();
-    doc.add("format", Value::makeString(std::string(formatTag)))
-        .add("version", Value::makeNumber(Preset::currentVersion))
-        .add("name", Value::makeString(p.name))
-        .add("description", Value::makeString(p.description))
-        .add("scene", Value::makeString(info.key))
-        .add("model", Value::makeString(std::string(modelKey(p.model))));
+    Document doc = Document::object();
+    doc["format"] = std::string(formatTag);
+    doc["version"] = static_cast<double>(Preset::currentVersion);
+    doc["name"] = p.name;
+    doc["description"] = p.description;
+    doc["scene"] = info.key;
+    doc["model"] = std::string(modelKey(p.model));
     if (p.integrator)
-        doc.add("integrator", Value::makeString(std::string(integratorKey(*p.integrator))));
+        doc["integrator"] = std::string(integratorKey(*p.integrator));
     if (p.impacts)
-        doc.add("impacts", Value::makeString(std::string(impactModeKey(*p.impacts))));
+        doc["impacts"] = std::string(impactModeKey(*p.impacts));
     if (p.dt)
-        doc.add("dt", Value::makeNumber(*p.dt));
+        doc["dt"] = *p.dt;
     if (p.steps)
-        doc.add("steps", Value::makeNumber(static_cast<double>(*p.steps))); // exact: steps <= 4e9 < 2^53
+        doc["steps"] = static_cast<double>(*p.steps); // exact: steps <= 4e9 < 2^53
     if (!p.params.empty()) {
-        Value params = Value::makeObject();
+        Document params = Document::object();
         for (const auto& [name, value] : p.params) {
             const bool isVector = findParam(info, name)->kind == ParamKind::Vector; // checked above
-            params.add(name, isVector ? vectorValue(value) : Value::makeNumber(value.x()));
+            params[name] = isVector ? vectorValue(value) : Document(value.x());
         }
-        doc.add("params", std::move(params));
+        doc["params"] = std::move(params);
     }
-    Value view = viewValue(p.view);
-    if (!view.members.empty())
-        doc.add("view", std::move(view));
+    Document view = viewValue(p.view);
+    if (!view.empty())
+        doc["view"] = std::move(view);
     return doc;
 }
 
 // How messages name a preset that has no file.
 std::string presetOrigin(const Preset& p)
 {
-    return "preset '" + json::printable(p.name) + "'";
+    return "preset '" + printableInput(p.name) + "'";
 }
 
 std::string readPresetFile(const std::string& path)
@@ -427,7 +442,7 @@ std::string readPresetFile(const std::string& path)
 
 Preset parsePreset(std::string_view jsonText, const std::string& origin)
 {
-    const Value doc = json::parse(jsonText, origin);
+    const Document doc = json::parse(jsonText, origin);
     const Where root{origin, ""};
     readHeader(doc, root);
     checkObject(doc, root,
@@ -436,21 +451,21 @@ Preset parsePreset(std::string_view jsonText, const std::string& origin)
 
     Preset p;
     p.name = text(required(doc, "name", root), root / "name");
-    if (const Value* v = doc.find("description"))
+    if (const Document* v = find(doc, "description"))
         p.description = text(*v, root / "description");
     p.scene = key<SceneId>(required(doc, "scene", root), root / "scene", sceneByKey, sceneChoices());
     p.model = key<ModelKind>(required(doc, "model", root), root / "model", parseModel, "report, physical");
-    if (const Value* v = doc.find("integrator"))
+    if (const Document* v = find(doc, "integrator"))
         p.integrator = key<Integrator>(*v, root / "integrator", parseIntegrator, integratorChoices());
-    if (const Value* v = doc.find("impacts"))
+    if (const Document* v = find(doc, "impacts"))
         p.impacts = key<ImpactMode>(*v, root / "impacts", parseImpactMode, "located, step-end");
-    if (const Value* v = doc.find("dt"))
+    if (const Document* v = find(doc, "dt"))
         p.dt = number(*v, root / "dt");
-    if (const Value* v = doc.find("steps"))
+    if (const Document* v = find(doc, "steps"))
         p.steps = whole(*v, root / "steps", 0, static_cast<double>(maxSteps));
-    if (const Value* v = doc.find("params"))
+    if (const Document* v = find(doc, "params"))
         p.params = readParams(*v, root / "params", sceneInfo(p.scene));
-    if (const Value* v = doc.find("view"))
+    if (const Document* v = find(doc, "view"))
         p.view = readView(*v, root / "view");
     checkPreset(p, origin);
     return p;
@@ -464,7 +479,7 @@ std::string presetToJson(const Preset& preset)
 
 void savePreset(const std::filesystem::path& path, const Preset& preset)
 {
-    const std::string origin = "preset " + json::printable(path.string());
+    const std::string origin = "preset " + printableInput(path.string());
     checkPreset(preset, origin);
     const std::string text = presetToJson(preset);
     // Numbers are formatted by the C library; a locale with a decimal comma would make
@@ -512,10 +527,10 @@ Preset loadPreset(const std::string& nameOrPath)
         std::vector<std::string> keys;
         for (const BuiltinPreset& b : builtinPresets())
             keys.push_back(b.key);
-        throw InputError("preset '" + json::printable(nameOrPath) + "': no built-in preset has that name (built-in: " +
+        throw InputError("preset '" + printableInput(nameOrPath) + "': no built-in preset has that name (built-in: " +
                          joined(keys) + "); a preset file's name ends in .json");
     }
-    const std::string origin = "preset " + json::printable(nameOrPath);
+    const std::string origin = "preset " + printableInput(nameOrPath);
     return parsePreset(readPresetFile(nameOrPath), origin);
 }
 

@@ -160,6 +160,19 @@ private slots:
         QCOMPARE(ab::formatNumber(0.6), std::string("0.6"));
     }
 
+    void printableInputIsOneShortLine()
+    {
+        // Controls escaped so that no terminal sequence passes; quotes left as they are.
+        QCOMPARE(ab::printableInput("a\nb\x01\"c\"\x1b[31m"), std::string("a\\nb\\x01\"c\"\\x1b[31m"));
+        // A C1 control (U+009B, CSI) and a byte that is not UTF-8.
+        QCOMPARE(ab::printableInput("x\xC2\x9By\xFFz"), std::string("x\\u009by\\xffz"));
+        // Cut after 80 characters with an ellipsis, or after as many as asked.
+        QCOMPARE(ab::printableInput(std::string(100, 'x')), std::string(80, 'x') + "\xE2\x80\xA6");
+        QCOMPARE(ab::printableInput(std::string(100, 'x'), 40), std::string(40, 'x') + "\xE2\x80\xA6");
+        // Characters, not bytes, are counted: never cut inside a character's UTF-8 bytes.
+        QCOMPARE(ab::printableInput(std::string(79, 'x') + "\xC3\xA9yz"), std::string(79, 'x') + "\xC3\xA9\xE2\x80\xA6");
+    }
+
     void startOutsideTheBoxIsRefused()
     {
         const ab::SceneInfo& s = ab::sceneInfo(ab::SceneId::Box3d);

@@ -292,7 +292,7 @@ private slots:
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("mentions");
         QTest::newRow("malformed JSON") << QByteArray(R"({"format": "amazeballs-preset", "version": 1,})")
-                                        << "line 1 column 46: expected a key";
+                                        << "line 1 column 46: syntax error while parsing object key - unexpected '}'";
         QTest::newRow("number beyond a double")
             << doc("box3d", R"(, "params": {"k": 1e999})") << "the number 1e999 is outside the range of a double";
         QTest::newRow("duplicate key") << doc("box3d", R"(, "params": {"k": 0.5, "k": 0.6})") << "duplicate key 'k'";
