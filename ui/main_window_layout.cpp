@@ -20,10 +20,13 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace ab::ui {
 
@@ -57,6 +60,52 @@ private:
     QWidget* scroll_;
 };
 
+// Gives the settings column, whenever the window has room for it, the width its choices
+// need (up to 30 % of the window), taken from the 3D view while that keeps 400 px, then
+// from the charts: a window opened small and then maximised would otherwise keep a column
+// that scrolls sideways, its choices and buttons cut at its edge. It only widens, so a
+// column the user dragged narrower stays so until the window grows again.
+class WidenSettingsColumn : public QObject {
+public:
+    WidenSettingsColumn(QSplitter* columns, QScrollArea* settings)
+        : QObject(columns), columns_(columns), settings_(settings)
+    {
+        columns->installEventFilter(this);
+    }
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::Resize || event->type() == QEvent::Show)
+            QMetaObject::invokeMethod(
+                this, [this] { widen(); }, Qt::QueuedConnection);
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    void widen()
+    {
+        QList<int> sizes = columns_->sizes();
+        if (!settings_ || sizes.size() != 3 || !settings_->widget() || settings_->height() == 0)
+            return;
+        const int need = settings_->widget()->minimumWidth() + settings_->verticalScrollBar()->sizeHint().width() +
+                         2 * settings_->frameWidth();
+        const int target = std::min(need, int(0.3 * columns_->width()));
+        int missing = target - sizes[0];
+        if (missing <= 0)
+            return;
+        const int fromView = std::clamp(sizes[1] - 400, 0, missing);
+        const int fromCharts = std::clamp(sizes[2] - 300, 0, missing - fromView);
+        if (fromView + fromCharts == 0)
+            return;
+        sizes[0] += fromView + fromCharts;
+        sizes[1] -= fromView;
+        sizes[2] -= fromCharts;
+        columns_->setSizes(sizes);
+    }
+
+    QSplitter* columns_;
+    QScrollArea* settings_;
+};
+
 } // namespace
 
 void MainWindow::buildLayout()
@@ -76,6 +125,7 @@ void MainWindow::buildLayout()
     splitter->setStretchFactor(1, 3);
     splitter->setStretchFactor(2, 2);
     splitter->setSizes({400, 600, 480}); // the settings column as wide as its widest choice at 1400
+    new WidenSettingsColumn(splitter, splitter->findChild<QScrollArea*>("settingsScroll"));
     setCentralWidget(splitter);
     readout_ = new StatusReadout(statusBar());
     readout_->setFrameRate(view_ ? 0.0 : -1.0);
@@ -128,6 +178,7 @@ QWidget* MainWindow::buildLeftPanel()
     layout->addWidget(parameters_);
     layout->addStretch(1);
     auto* scroll = new QScrollArea;
+    scroll->setObjectName("settingsScroll");
     scroll->setWidget(settings);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);

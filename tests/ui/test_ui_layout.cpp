@@ -27,6 +27,8 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 #include <QTextDocument>
@@ -280,6 +282,31 @@ private slots:
     void cleanup() { ab::ui::installLanguage(Language::English); }
 
     void theScreenIsTheOneAsked() { QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), screenSize()); }
+
+    void aWindowThatGrowsWidensTheSettingsColumnToItsChoices()
+    {
+        // Opened small and then maximised, the settings column took none of the new width
+        // and scrolled sideways, its choices and "Report values" cut at its edge.
+        ab::ui::WindowShell shell;
+        ab::ui::MainWindow& w = shell.window();
+        w.showScene(SceneId::Box3d);
+        w.resize(900, 600);
+        w.move(0, 0);
+        w.show();
+        settle();
+        auto* settings = w.findChild<QScrollArea*>("settingsScroll");
+        QVERIFY(settings);
+        w.resize(screenSize());
+        // As wide as its choices where that is at most 30 % of the window (1920 px), else
+        // those 30 % (1280 px, where it scrolls sideways).
+        const int need = settings->widget()->minimumWidth() + settings->verticalScrollBar()->sizeHint().width();
+        const int expected = std::min(need, int(0.3 * screenSize().width()));
+        QTRY_VERIFY2(
+            settings->width() >= expected - 2,
+            qPrintable(QStringLiteral("settings column %1 px, expected %2").arg(settings->width()).arg(expected)));
+        if (need <= 0.3 * screenSize().width())
+            QVERIFY(!settings->horizontalScrollBar()->isVisible());
+    }
 
     void noTextIsCutOnAnyChartPage_data() { addRows(); }
     void noTextIsCutOnAnyChartPage()

@@ -83,15 +83,15 @@ QColor lineColour(ChartKind kind, int line, LineFamily family)
 
 QColor comparisonOnDark(const QColor& run)
 {
-    // Hue in degrees; the shorter way round the circle to violet (280), at most 40.
-    constexpr double violet = 280.0, turn = 40.0;
+    // Hue in degrees; the shorter way round the circle to violet (280), at most 60.
+    constexpr double violet = 280.0, turn = 60.0;
     const double h = std::max(0.0, double(run.hslHueF())) * 360.0;
     double towards = violet - h;
     if (towards > 180.0)
         towards -= 360.0;
     if (towards < -180.0)
         towards += 360.0;
-    // A violet run line (the total energy) turns on towards magenta instead, so that
+    // A violet run line (the total energy) turns on past magenta to red instead, so that
     // its comparison is still of another hue.
     double hue = std::abs(towards) < turn / 2 ? h + 1.5 * turn : h + std::clamp(towards, -turn, turn);
     hue = hue < 0.0 ? hue + 360.0 : hue >= 360.0 ? hue - 360.0 : hue;

@@ -39,7 +39,8 @@ enum class LineFamily { Run, ClosedForm, Comparison };
 QColor lineColour(ChartKind kind, int line, LineFamily family = LineFamily::Run);
 // The comparison's colour for a run line of colour `run` on a dark plot, where the
 // darkened family of lineColour() would sink into the background: the run's hue turned
-// up to 40 degrees towards violet (a violet one 60 on, to magenta), saturated and light.
+// up to 60 degrees towards violet (a violet one 90 on, to red), saturated and light:
+// magenta beside red, cyan beside green, violet beside blue.
 QColor comparisonOnDark(const QColor& run);
 // The property a comparison series carries: the colour of the run line it shadows.
 inline constexpr char comparisonOfProperty[] = "ab_comparisonOf";

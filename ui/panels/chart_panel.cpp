@@ -256,7 +256,10 @@ int ChartPanel::readableChartHeight() const
         const int width = std::max(views_[slot(kind)]->width(), 200);
         const int legendRows = std::max(1, (legendWidth + width - 1) / width);
         const int plot = std::max(axisTitle.horizontalAdvance(c->valueAxis()->titleText()) + 24, 6 * labels.height());
-        const int h = int(1.5 * title.height()) + int(1.5 * legend.height()) * legendRows + 2 * labels.height() +
+        // The legend is drawn in the chart's bottom margin, which is made as tall as it once
+        // the chart is laid out; before that, its rows as estimated here.
+        const int legendBand = std::max(int(1.5 * legend.height()) * legendRows, c->margins().bottom());
+        const int h = int(1.5 * title.height()) + legendBand + c->margins().top() + 2 * labels.height() +
                       axisTitle.height() + plot + 24;
         tallest = std::max(tallest, h);
     }
