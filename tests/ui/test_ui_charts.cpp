@@ -15,6 +15,7 @@
 #include "ui/sim/run_engine.h"
 
 #include <QChartView>
+#include <QGraphicsTextItem>
 #include <QLineSeries>
 #include <QValueAxis>
 #include <QtTest>
@@ -259,6 +260,36 @@ private slots:
         QCOMPARE(points.size(), 151);
         for (const QPointF& p : points)
             QVERIFY(std::abs(p.y() - (-0.0982 * p.x())) < 1e-12);
+    }
+
+    void tickLabelsNeverShowRoundOff()
+    {
+        // A velocity falling from 0 to -0.49 (stage 1's first five steps): the axis runs
+        // from -0.5 to 0 in steps of 0.1, and its top tick reads "0", not "-2.77556e-17".
+        const ab::RunSpec spec = testing::spec(ab::SceneId::Bounce1d);
+        ab::ui::MotionTrack track;
+        const auto sim = ab::makeSimulation(spec);
+        const ab::ConservationMeter meter(*sim);
+        long long i = 0;
+        for (const ab::State& s : testing::record(spec, 5))
+            track.add(i++, s.t, s.p.col(0), s.v.col(0), meter.measure(s));
+        auto* chart = new ab::ui::MotionChart(ab::ui::ChartKind::Velocity);
+        chart->configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0);
+        chart->setTimeSpan(6);
+        chart->showTrack(track, 600);
+        QChartView view(chart); // owns the chart
+        view.resize(600, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QCoreApplication::processEvents();
+        QStringList labels;
+        for (const QGraphicsItem* item : view.scene()->items())
+            if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item))
+                labels << t->toPlainText();
+        QVERIFY2(labels.contains(QStringLiteral("0")), qPrintable(labels.join(" | ")));
+        QVERIFY2(labels.contains(QStringLiteral("-0.5")), qPrintable(labels.join(" | ")));
+        for (const QString& l : labels)
+            QVERIFY2(!l.contains(QLatin1String("e-")), qPrintable(l));
     }
 
     void referenceSeamDrawsTheClosedFormDashedAndCanBeRemoved()

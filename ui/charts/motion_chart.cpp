@@ -24,16 +24,19 @@ constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
     {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"},
     {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"}};
 
-// [lo, hi] widened to whole ticks, with ticks anchored at zero.
+// [lo, hi] widened to whole ticks, which fall on multiples of the step (zero among them).
+// Fixed ticks: Qt places them at min + i (max - min) / (n - 1), exact at the ends, where its
+// dynamic ticks add the step up from the bottom and label a zero at the top of a range
+// [-0.5, 0] as "-2.77556e-17".
 void setNiceRange(QValueAxis* axis, double lo, double hi, int ticks)
 {
     if (!(hi > lo))
         return;
     const double step = niceTickStep(hi - lo, ticks);
-    axis->setTickType(QValueAxis::TicksDynamic);
-    axis->setTickAnchor(0.0);
-    axis->setTickInterval(step);
-    axis->setRange(std::floor(lo / step) * step, std::ceil(hi / step) * step);
+    const double bottom = std::floor(lo / step) * step, top = std::ceil(hi / step) * step;
+    axis->setTickType(QValueAxis::TicksFixed);
+    axis->setTickCount(std::max(2, int(std::lround((top - bottom) / step)) + 1));
+    axis->setRange(bottom, top);
 }
 
 QString squared(const QString& unit)
