@@ -68,7 +68,9 @@ void checkStart(const World& w, const State& s, const std::vector<std::string>& 
 bool hasRotation(const Simulation& sim, const State& start)
 {
     const World* w = worldOf(sim);
-    if (!w || !(w->spinRadius > 0.0))
+    if (!w) // the many-balls engine's start carries spins exactly when its balls turn
+        return sim.spec().scene == SceneId::ManyBalls && sim.spec().model == ModelKind::Physical && start.spins();
+    if (!(w->spinRadius > 0.0))
         return false;
     return w->anyRough() || (start.spins() && !start.w.isZero(0.0));
 }
