@@ -52,8 +52,10 @@ constexpr double curvature(Integrator i)
 // Flight of one ball for time h with every wall impact located: fly to the earliest
 // impact, reflect there, go on with what is left of h. A ball left at rest on a wall that
 // gravity presses it against stays there for the rest of h (until an impulse along that
-// wall gives it a velocity off it). Returns the rebounds.
-template <Integrator I, bool Rough> int flyLocated(double p[3], double v[3], double w[3], double h, const Walls& walls)
+// wall gives it a velocity off it). A ball `resting` on the floor at the start does not
+// strike it (its friction is floorFriction's). Returns the rebounds.
+template <Integrator I, bool Rough>
+int flyLocated(double p[3], double v[3], double w[3], double h, const Walls& walls, bool resting)
 {
     const double acc[3] = {0.0, -walls.g, 0.0};
     bool pinned[3] = {false, false, false};
@@ -83,7 +85,7 @@ template <Integrator I, bool Rough> int flyLocated(double p[3], double v[3], dou
         if (axis < 0)
             break;
         p[axis] = lower ? walls.lo : walls.hi; // exactly on the wall, whatever the rounding of the flight
-        rebounds += wallImpact<Rough>(p, v, w, axis, walls, false) ? 1 : 0;
+        rebounds += wallImpact<Rough>(p, v, w, axis, walls, resting) ? 1 : 0;
         const bool pressed = lower ? acc[axis] < 0.0 : acc[axis] > 0.0;
         pinned[axis] = v[axis] == 0.0 && pressed;
         if constexpr (Rough)
@@ -93,7 +95,7 @@ template <Integrator I, bool Rough> int flyLocated(double p[3], double v[3], dou
     for (int a = 0; a < 3; ++a) {
         if (left > 0.0 && !pinned[a])
             flight<I>(p[a], v[a], acc[a], left); // more impacts than located: the rest unlocated
-        rebounds += wallImpact<Rough>(p, v, w, a, walls, false) ? 1 : 0;
+        rebounds += wallImpact<Rough>(p, v, w, a, walls, resting) ? 1 : 0;
     }
     return rebounds;
 }
@@ -126,7 +128,7 @@ inline void flyOne(const Flight& f, int i, const Place& place, double& maxSpeed2
         if (f.located) {
             p[0] = f.x[i], p[1] = f.y[i], p[2] = f.z[i];
             v[1] = f.vy[i];
-            f.rebounds[i] += flyLocated<I, Rough>(p, v, spin, h, w);
+            f.rebounds[i] += flyLocated<I, Rough>(p, v, spin, h, w, onFloor);
         } else {
             for (int a = 0; a < 3; ++a)
                 f.rebounds[i] += wallImpact<Rough>(p, v, spin, a, w, onFloor) ? 1 : 0;
