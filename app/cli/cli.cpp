@@ -31,7 +31,8 @@ const std::array commands{
     Command{"bench",
             "bench [options]           cost per ball-step of many-balls (--balls N... --threads T\n"
             "                            --broadphase grid|all-pairs --model physical|report --steps S\n"
-            "                            --repeats R --out FILE.csv --markdown FILE.md)",
+            "                            --repeats R --out FILE.csv --markdown FILE.md\n"
+            "                            --set mu|beta|inertia|spin=VALUE: rough balls)",
             benchCommand},
     Command{"chart",
             "chart SCENE [options]     the window's chart as PNG, SVG or PDF, headless:\n"

@@ -108,8 +108,8 @@ private slots:
         }
         QVERIFY2(rolledAt >= tStar && rolledAt < tStar + dt + 1e-12, qPrintable(QString::number(rolledAt)));
         const State& end = s.back();
-        QVERIFY(std::abs(end.v(0, 0) - roll) <= 1e-9 * roll);                // v0/(1 + q)
-        QVERIFY(std::abs(r * end.spin(0).z() + roll) <= 1e-9 * roll);         // r w = v, rolling sense
+        QVERIFY(std::abs(end.v(0, 0) - roll) <= 1e-9 * roll);              // v0/(1 + q)
+        QVERIFY(std::abs(r * end.spin(0).z() + roll) <= 1e-9 * roll);      // r w = v, rolling sense
         QVERIFY(std::abs(end.v(2, 0)) + std::abs(end.spin(0).x()) == 0.0); // nothing across
         // Rolling from t*: x(t*) + v (t - t*), within the first-order lag and one step's slide.
         const double x = x0 + v0 * tStar - 0.5 * mu * g * tStar * tStar + roll * (end.t - tStar);
@@ -143,7 +143,9 @@ private slots:
         };
         QVERIFY(std::abs(energy(after) - energy(s[0])) <= 1e-12 * energy(s[0]));
         const Vector3d n = Vector3d::UnitY();
-        const auto angular = [&](const State& st) { return Vector3d(r * n.cross(st.v.col(0)) + q * r * r * st.spin(0)); };
+        const auto angular = [&](const State& st) {
+            return Vector3d(r * n.cross(st.v.col(0)) + q * r * r * st.spin(0));
+        };
         QVERIFY((angular(after) - angular(s[0])).norm() <= 1e-12 * u);
         QCOMPARE(after.bounces[0], 1);
     }
@@ -228,8 +230,8 @@ private slots:
         // 20000 rough balls (mu 0.5, beta 0.3, start spins up to 0.2) touching on their
         // lattice, falling under gravity: 1, 2 and 4 threads agree in every bit of p, v, w.
         auto run = [](int threads) {
-            auto spec = physical({"n=20000", "g=9.82", "box=56", "seed=12", "mu=0.5", "beta=0.3", "spin=0.2"},
-                                 1.0 / 240.0);
+            auto spec =
+                physical({"n=20000", "g=9.82", "box=56", "seed=12", "mu=0.5", "beta=0.3", "spin=0.2"}, 1.0 / 240.0);
             spec.threads = threads;
             return testing::record(spec, 60).back();
         };
