@@ -6,7 +6,7 @@
 // keeps the momentum and changes both spins alike, sticking to -beta times the slip or
 // sliding at Coulomb's bound; mu = 0 or beta = -1 equals the smooth run bit for bit; and
 // spin-on runs are bit-identical for any thread count and kernel.
-#include "support/sim_helpers.h"
+#include "support/many_balls_helpers.h"
 
 #include "core/physical/many_balls_physical.h"
 
@@ -26,25 +26,8 @@ Q_DECLARE_METATYPE(ab::Integrator)
 
 namespace {
 
-ab::RunSpec physical(std::initializer_list<std::string> assignments, double dt)
-{
-    ab::RunSpec spec = testing::spec(SceneId::ManyBalls, assignments, ModelKind::Physical);
-    spec.dt = dt;
-    return spec;
-}
-
-State balls(std::initializer_list<std::pair<Vector3d, Vector3d>> pv)
-{
-    State s;
-    s.resize(static_cast<int>(pv.size()));
-    int i = 0;
-    for (const auto& [p, v] : pv) {
-        s.p.col(i) = p;
-        s.v.col(i) = v;
-        ++i;
-    }
-    return s;
-}
+constexpr auto physical = &testing::manyBallsPhysical; // the physical model with --set assignments and dt
+constexpr auto balls = &testing::ballsAt;              // a start from (position, velocity) pairs
 
 bool identical(const State& a, const State& b)
 {
