@@ -9,6 +9,7 @@
 #include "support/many_balls_helpers.h"
 
 #include "core/physical/many_balls_physical.h"
+#include "core/physical/physical_simulation.h"
 
 #include <Eigen/Geometry> // cross products
 #include <QtTest>
@@ -206,6 +207,24 @@ private slots:
             QVERIFY(turned.w == run.front().w);
             QVERIFY(turned.w.cwiseAbs().maxCoeff() <= 0.3 && turned.w.cwiseAbs().maxCoeff() > 0.29);
         }
+    }
+
+    void trajectoryCarriesSpinsWhenTheBallsTurn()
+    {
+        // The CSV's wx,wy,wz (physical::hasRotation): rough balls, even from an --init
+        // start without spins, or start spins; never smooth balls without them.
+        const auto turns = [](std::initializer_list<std::string> set, bool init) {
+            auto spec = physical(set, 1.0);
+            if (init)
+                spec.init = balls({{Vector3d(0, -49, 0), Vector3d(1, 0, 0)}});
+            const auto sim = ab::makeSimulation(spec);
+            return ab::physical::hasRotation(*sim, sim->start());
+        };
+        QVERIFY(turns({"n=1", "mu=0.5"}, true));
+        QVERIFY(turns({"n=1", "mu=0.5"}, false));
+        QVERIFY(turns({"n=1", "spin=0.3"}, false));
+        QVERIFY(!turns({"n=1"}, true));
+        QVERIFY(!turns({"n=1", "mu=0.5", "beta=-1"}, false));
     }
 
     void roughRunsAreBitIdenticalForAnyThreadCount()
