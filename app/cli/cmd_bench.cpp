@@ -2,6 +2,8 @@
 // `bench`: cost per ball-step of the many-balls scene on the benchmark workload
 // (core/physical/many_balls_physical.h): `--repeats` runs from the workload's start, each
 // 100 warm-up steps then `--steps` timed steps; the median run per ball and step.
+// `--set NAME=VALUE` sets the rough balls' constants of the physical model (mu, beta,
+// inertia, spin: docs/spin.md) on the same workload.
 #include "commands.h"
 
 #include "bench_protocol.h"
@@ -10,6 +12,7 @@
 #include "../../core/io/atomic_file.h"
 #include "../../core/physical/many_balls_physical.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <ostream>
@@ -45,7 +48,32 @@ struct Options {
     int steps = 200;
     int repeats = 3;
     std::optional<std::string> out, markdown;
+    std::vector<std::string> assignments; // --set, friction constants only
 };
+
+// The constants of rough balls that --set may change; the workload fixes everything else.
+constexpr const char* kSettable[] = {"mu", "beta", "inertia", "spin"};
+
+// Checks each --set against many-balls' table (range, form) and the keys bench takes.
+std::vector<std::string> readAssignments(Parsed& args, ModelKind model)
+{
+    std::vector<std::string> out = args.options("set");
+    RunSpec probe(SceneId::ManyBalls);
+    probe.model = ModelKind::Physical;
+    for (const std::string& a : out) {
+        std::string key = a.substr(0, a.find('='));
+        key.erase(0, key.find_first_not_of(" \t"));
+        key.erase(key.find_last_not_of(" \t") + 1);
+        if (std::find(std::begin(kSettable), std::end(kSettable), key) == std::end(kSettable))
+            throw InputError("--set " + printableInput(a) +
+                             ": bench sets only mu, beta, inertia and spin (the workload fixes the rest)");
+        if (model != ModelKind::Physical)
+            throw InputError("--set " + printableInput(a) + ": " + key +
+                             " is a constant of the physical model; use it without --model report");
+        probe.params.parseAssignment(a);
+    }
+    return out;
+}
 
 Options readOptions(Parsed& args)
 {
@@ -74,6 +102,7 @@ Options readOptions(Parsed& args)
     o.repeats = static_cast<int>(args.integer("repeats", 1, 99).value_or(o.repeats));
     o.out = args.option("out");
     o.markdown = args.option("markdown");
+    o.assignments = readAssignments(args, o.model);
     if (o.model == ModelKind::Report && o.threads > 1)
         throw InputError("--threads: the report model updates its balls one after another on one thread; use "
                          "--threads 1 with --model report");
@@ -108,7 +137,11 @@ std::vector<Case> casesOf(const Options& o, std::ostream& err)
 
 Row measure(const Case& c, const Options& o)
 {
-    const RunSpec spec = physical::benchmarkSpec(c.balls, c.model, c.broadphase, c.threads);
+    RunSpec spec = physical::benchmarkSpec(c.balls, c.model, c.broadphase, c.threads);
+    for (const std::string& a : o.assignments)
+        spec.params.parseAssignment(a);
+    if (const double spin = spec.params.real("spin"); spin > 0.0)
+        physical::randomSpins(*spec.init, spin, static_cast<std::uint64_t>(spec.params.integer("seed")));
     Row row{c, {}, std::nullopt, 0.0};
     if (c.model == ModelKind::Physical) {
         // The engine steps in place: the cost of the simulation itself, without the copy
@@ -165,7 +198,10 @@ void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Option
         << "The median of " << o.repeats << " runs from the start, each " << kWarmupSteps << " warm-up steps then "
         << o.steps
         << " timed steps. ns per ball-step is wall time; CPU ns is the process's CPU time over the same steps, all "
-           "threads together.\n";
+           "threads together.";
+    for (const std::string& a : o.assignments)
+        out << " --set " << a;
+    out << "\n";
 }
 
 } // namespace

@@ -176,6 +176,8 @@ CommandSpec benchCommandSpec()
                 {"out", "FILE.csv", "write the CSV to FILE.csv (progress on standard output)", "standard output", false,
                  V::File},
                 {"markdown", "FILE.md", "also write the table as Markdown", "", false, V::File},
+                {"set", "NAME=VALUE", "a constant of rough balls: mu, beta, inertia or spin (the physical model)",
+                 "smooth balls", true, V::Assignment},
             },
             benchCommand};
 }

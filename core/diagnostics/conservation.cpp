@@ -32,6 +32,8 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
                physical::contactLawOf(spec) != physical::ContactLaw::Impulse) {
         spring_ = physical::springFloorFor(spec);
         mass_ = {spec.params.real("m")};
+    } else if (spec.model == ModelKind::Physical && spec.scene == SceneId::ManyBalls) {
+        spinInertia_ = spec.params.real("inertia") * spec.params.real("r") * spec.params.real("r"); // I/m = q r^2
     }
     // "Moving": faster than the speed that would lift the ball by h = r/100 against
     // gravity (1/2 v^2 = g h, so v = sqrt(2 g h)), a rise no one sees. It lies below the
@@ -94,6 +96,8 @@ ConservationSample ConservationMeter::measureEqualMasses(const State& s) const
     }
     ConservationSample out;
     out.energy.kinetic = 0.5 * m * v2sum;
+    if (spinInertia_ > 0.0 && s.spins()) // a turning ball's energy I |w|^2 / 2 is kinetic too
+        out.energy.kinetic += 0.5 * m * spinInertia_ * s.w.squaredNorm();
     out.energy.potential = m * g_ * heights;
     out.momentum = m * Eigen::Vector3d(px, py, pz);
     out.moving = moving;

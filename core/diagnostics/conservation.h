@@ -7,6 +7,8 @@
 //  1. Masses: the physical model's own (`m`, or `m1`, `m2`: its World); energies are then
 //     in mass length^2/time^2 and momenta in mass length/time. The report model and
 //     many-balls have equal masses: unit mass, so the values are per unit mass.
+//     A turning ball's rotational energy I |w|^2 / 2 counts as kinetic (stages 1-3 and
+//     many-balls, physical model).
 //  2. Potential energy is m g (y - floor): the floor is y = 0 (stages 1-3) or the box's
 //     bottom face y = -L/2 (stage 4), as the 3D view draws it.
 //  3. Impacts are counted by the models in State::impacts (many-balls, both models).
@@ -63,6 +65,7 @@ private:
     double frozenAtOrBelow_ = -std::numeric_limits<double>::infinity();
     std::optional<physical::SpringFloor> spring_;
     const physical::World* world_ = nullptr; // the physical model's, when the simulation has one (not owned)
+    double spinInertia_ = 0.0;               // q r^2 of many-balls' turning balls (docs/spin.md); 0 elsewhere
 };
 
 // The meter built for `sim`, applied to `s` (convenient for one state; a run builds the

@@ -26,6 +26,7 @@ enum class FindingKind {
     Momentum,          // momentum changed in a pair contact (amount: per cent of the pair's speeds)
     RepeatedSwap,      // the report's stage-3 swap repeats while the balls overlap
     Stuck,             // the report's stage-4 ball on the floor keeps its speed (amount) without moving
+    AngularMomentum,   // angular momentum about the contact point changed at the floor (amount: per cent)
 };
 
 // The report's own rule behind a finding, with where the report has it.

@@ -20,7 +20,12 @@
 //     only grazes the contact distance, by under a tenth of a radius, is a warning; two-balls
 //     and small many-balls runs all pairs; larger runs look for overlaps on a grid, the
 //     largest on every 10th step only), and the momentum change of a pair contact away from the walls (two-balls);
-//  5. the report model's own known failures, named as such: its stage-1 Euler energy
+//  5. rough balls (docs/spin.md): the angular momentum about the contact point,
+//     r n x v + q r^2 w per unit mass, kept across a floor impact and while a ball slides or
+//     rolls on the floor, for each ball whose step stays clear of the other faces and balls
+//     (a warning above 1e-9 of its size); energy (3.) counts rotation, so any gain with
+//     e, k <= 1 and |beta| <= 1 is the method's;
+//  6. the report model's own known failures, named as such: its stage-1 Euler energy
 //     gain, the stage-3 swap repeating while the balls overlap, stage-4 balls stuck on the
 //     floor and its unclamped push beyond the walls.
 #pragma once
@@ -58,8 +63,9 @@ struct HealthFigures {
     double maxPenetration = 0.0; // deepest centre beyond the floor or a wall (length unit)
     int escaped = 0;             // balls that left the box or fell through the floor
     bool nonfinite = false;
-    std::optional<double> maxMomentumError; // pair contacts: |dp| / (|v1| + |v2|), two-balls
-    std::optional<double> maxOverlap;       // deepest 2r - distance between two balls
+    std::optional<double> maxMomentumError;        // pair contacts: |dp| / (|v1| + |v2|), two-balls
+    std::optional<double> maxOverlap;              // deepest 2r - distance between two balls
+    std::optional<double> maxAngularMomentumError; // floor contacts of turning balls: |dL| / |L| (5.)
 };
 
 class HealthCheck {

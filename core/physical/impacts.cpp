@@ -6,18 +6,6 @@
 
 namespace ab::physical {
 
-namespace {
-
-// The share lambda of the sticking impulse that Walton's rule allows: 1 when sticking
-// (S9) is the smaller, mu P_n / |P_stick| when sliding (S10) is. `stick` and `slide` are
-// the two impulses' sizes in any common unit.
-double waltonShare(double stick, double slide)
-{
-    return stick <= slide ? 1.0 : slide / stick;
-}
-
-} // namespace
-
 double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, Eigen::Vector3d& omega, double minFlight)
 {
     const double approach = -wall.normalSpeed(v);
@@ -36,8 +24,7 @@ double resolveWallImpact(const World& w, const Wall& wall, Eigen::Vector3d& v, E
         g[wall.axis] = 0.0;
         const double q = w.inertia, speed = g.norm();
         if (speed > 0.0) {
-            const double c = waltonShare((1.0 + w.beta) * q / (1.0 + q) * speed, wall.mu * (approach + rebound)) *
-                             (1.0 + w.beta) / (1.0 + q);
+            const double c = waltonFactor(q, w.beta, speed, wall.mu * (approach + rebound));
             v -= c * q * g;                         // dv = P_t / m = -c q g_t      (S9-S10)
             omega += c / w.spinRadius * n.cross(g); // dw = -r n x P_t / I = c n x g_t / r (S13)
         }
@@ -74,9 +61,7 @@ double resolvePairImpact(const World& w, int i, int j, const Eigen::Vector3d& pi
         // P_t = -c q mr g_t on i, -P_t on j, and each ball turns by -r n x (+-P_t) / (q m r^2)
         // = c mr n x g_t / (m r), the same sign for both (S12).
         const double q = w.inertia, mr = 1.0 / (1.0 / mi + 1.0 / mj);
-        const double c =
-            waltonShare((1.0 + w.beta) * q / (1.0 + q) * speed, w.pairMu * (1.0 + restitution) * -closing) *
-            (1.0 + w.beta) / (1.0 + q);
+        const double c = waltonFactor(q, w.beta, speed, w.pairMu * (1.0 + restitution) * -closing);
         const Eigen::Vector3d tangential = c * q * mr * g; // -P_t
         vi -= tangential / mi;
         vj += tangential / mj;

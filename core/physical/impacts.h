@@ -26,6 +26,19 @@
 
 namespace ab::physical {
 
+// Walton's rule (S9-S10) as one factor c: the tangential impulse is P_t = -c q m g_t, m the
+// ball's mass at a wall or the pair's reduced mass, so that g_t' = g_t + P_t / m* with
+// m* = q/(1+q) m. `slip` is |g_t|; `slide` is the sliding bound mu P_n / m (P_n the normal
+// impulse). Sticking (S9) gives c = (1 + beta)/(1 + q); when it asks for more than
+// Coulomb's bound (S10) it is scaled down to that bound. Every scene's contacts use it
+// (impacts.cpp; the many-balls engine's walls and pairs).
+inline double waltonFactor(double q, double beta, double slip, double slide)
+{
+    const double stick = (1.0 + beta) * q / (1.0 + q) * slip;  // |P_t| / m of S9
+    const double share = stick <= slide ? 1.0 : slide / stick; // S10 when smaller
+    return share * (1.0 + beta) / (1.0 + q);
+}
+
 // Ball with velocity v and spin omega hits `wall` (its centre on the wall). Along the
 // normal v_n'' = -k v_n' (eq 2.3); along the wall Walton's impulse (S9-S10) on a rough
 // wall, which keeps the angular momentum about the contact point, m r n x v + I w (S13).

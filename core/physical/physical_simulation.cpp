@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "physical_simulation.h"
 
+#include "many_balls_physical.h"
+
 #include "../params.h"
 
 namespace ab::physical {
@@ -68,7 +70,13 @@ void checkStart(const World& w, const State& s, const std::vector<std::string>& 
 bool hasRotation(const Simulation& sim, const State& start)
 {
     const World* w = worldOf(sim);
-    if (!w || !(w->spinRadius > 0.0))
+    if (!w) { // the many-balls engine: rough balls, or a start with spins
+        const RunSpec& spec = sim.spec();
+        if (spec.scene != SceneId::ManyBalls || spec.model != ModelKind::Physical)
+            return false;
+        return ManyBallsSettings::fromSpec(spec, sim.dt()).rough() || start.spins();
+    }
+    if (!(w->spinRadius > 0.0))
         return false;
     return w->anyRough() || (start.spins() && !start.w.isZero(0.0));
 }

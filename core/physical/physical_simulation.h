@@ -68,7 +68,8 @@ inline const World* worldOf(const Simulation& sim)
 }
 
 // The run turns its balls: a physical simulation of stages 1-3 whose contacts have
-// friction, or whose start state spins. Its trajectory CSV carries wx,wy,wz.
+// friction, or whose start state spins; a physical many-balls run with rough balls or a
+// start with spins (a `spin` bound, or spins from --init). Its trajectory CSV carries wx,wy,wz.
 bool hasRotation(const Simulation& sim, const State& start);
 
 // Validates the integrator and impact mode for the physical model and the start state

@@ -96,7 +96,7 @@ void roll(const World& w, const Wall& wall, Eigen::Vector3d& v, Eigen::Vector3d&
 {
     const Eigen::Vector3d n = wall.normal();
     const double q = w.inertia, r = w.spinRadius;
-    const Eigen::Vector3d vt = (along(wall, v) + q * r * omega.cross(n)) / (1.0 + q); // S4
+    const Eigen::Vector3d vt = rollingVelocity(along(wall, v), omega, n, q, r); // S4
     const double spinAbout = omega.dot(n);
     const double normalPart = v[wall.axis];
     v = vt;

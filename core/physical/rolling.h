@@ -49,4 +49,12 @@ double rollTime(const World& w, int i, const Eigen::Vector3d& v, const Eigen::Ve
 // (spin about the normal is kept: the contact point has no lever on it).
 void roll(const World& w, const Wall& wall, Eigen::Vector3d& v, Eigen::Vector3d& omega);
 
+// The centre's velocity along the wall once it rolls (S4): vt the velocity along the wall,
+// n the wall's inward normal, q and r of I = q m r^2. Shared with the many-balls engine.
+inline Eigen::Vector3d rollingVelocity(const Eigen::Vector3d& vt, const Eigen::Vector3d& omega,
+                                       const Eigen::Vector3d& n, double q, double r)
+{
+    return (vt + q * r * omega.cross(n)) / (1.0 + q);
+}
+
 } // namespace ab::physical

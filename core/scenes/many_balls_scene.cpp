@@ -43,6 +43,13 @@ SceneInfo makeManyBalls()
              "a rebound that would rise less than this ends at rest (restitution threshold), at walls and between "
              "balls",
              PhysicalModel),
+        frictionParam(true),
+        betaParam(),
+        inertiaParam(),
+        real("spin", "w_max", "rad/frame", 0.0, 0.0, 1e6, "free rotation: w constant in flight",
+             "start spins: each component of every ball's w uniform in [-spin, spin], drawn from the seed (0: the "
+             "balls start without spin)",
+             PhysicalModel),
     };
     s.crossCheck = [](const ParamValues& v) {
         if (v.real("box") <= 2.0 * v.real("r"))

@@ -2,7 +2,7 @@
 // The cases of the stability suite. Each returns its rows; rows of a model not in this
 // build say so when run. A case for a model still to come is added as rows here and
 // runs as soon as that model builds.
-#include "suite.h"
+#include "case_rows.h"
 
 #include "stability_limit.h"
 
@@ -14,8 +14,6 @@
 #include <map>
 
 namespace ab::stability {
-
-namespace {
 
 std::string num(double x)
 {
@@ -70,6 +68,8 @@ void append(std::vector<CaseRow>& to, std::vector<CaseRow> rows)
 {
     to.insert(to.end(), std::make_move_iterator(rows.begin()), std::make_move_iterator(rows.end()));
 }
+
+namespace {
 
 // bounce1d: free flight against the parabola y = h0 + v0 t - g t^2 / 2 until the first
 // contact (reference_error, in the scene's length unit).
@@ -458,9 +458,8 @@ std::vector<CaseRow> extremeConstants()
     CaseRow one = reportRow("extreme-constants", "N = 1", SceneId::ManyBalls, {"n=1"}, std::nullopt, 1000);
     rows.push_back(one);
     append(rows, physicalRows(one, impulseIntegrators));
-    CaseRow million =
-        reportRow("extreme-constants", "N = 1,000,000 (a box of 200: the start lattice of 100^3 sites)",
-                  SceneId::ManyBalls, {"n=1000000", "box=200"}, std::nullopt, 10);
+    CaseRow million = reportRow("extreme-constants", "N = 1,000,000 (a box of 200: the start lattice of 100^3 sites)",
+                                SceneId::ManyBalls, {"n=1000000", "box=200"}, std::nullopt, 10);
     million.skip = "the report's model tests every pair, 5e11 tests per frame";
     rows.push_back(million);
     CaseRow millionPhysical = million;
@@ -486,6 +485,10 @@ const std::vector<StabilityCase>& stabilityCases()
         {"dense-packing", "many balls at a high volume fraction, settling under gravity", densePacking},
         {"degenerate", "same centres, a normal with z = 0, a radius as large as the box", degenerate},
         {"extreme-constants", "g = 0, g = 1e6, k > 1, N = 1 and N = 1,000,000", extremeConstants},
+        {"spin-energy-drift", "rough superballs, k = e = 1 and beta = 1, over a million steps: energy drift",
+         spinEnergyDrift},
+        {"spin-large-mu", "rough balls with mu = 10: every contact sticks", spinLargeMu},
+        {"spin-backspin-wall", "a fast ball with back-spin against a wall", spinBackspinWall},
     };
     return cases;
 }

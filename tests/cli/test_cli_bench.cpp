@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // amazeballs-cli bench, run in process on small N: the CSV carries the contract's columns
-// with a finite positive cost for every case, the Markdown table is written, and every
+// with a finite positive cost for every case, the Markdown table is written, rough balls
+// run with --set, and every
 // bad argument exits with status 2, one line on stderr and no file left behind.
 #include "support/cli_runner.h"
 
@@ -82,6 +83,21 @@ private slots:
         QVERIFY(r.out.find("\n300,grid,1,") != std::string::npos);
     }
 
+    void roughBallsRunWithTheirSettingsNamed()
+    {
+        // --set mu, beta, inertia and spin make the same workload's balls rough; the
+        // Markdown's footnote names them.
+        QTemporaryDir dir;
+        const std::string md = dir.filePath("bench.md").toStdString();
+        const Result r = cli({"bench", "--balls", "1000", "--broadphase", "grid", "--steps", "5", "--repeats", "1",
+                              "--set", "mu=0.5", "--set", "beta=0.3", "--set", "spin=0.2", "--markdown", md});
+        QCOMPARE(r.status, 0);
+        QVERIFY(r.out.find("\n1000,grid,1,") != std::string::npos);
+        std::ifstream table(md);
+        const std::string text{std::istreambuf_iterator<char>(table), {}};
+        QVERIFY(text.find(" --set mu=0.5 --set beta=0.3 --set spin=0.2") != std::string::npos);
+    }
+
     void badArgumentsExitWithStatusTwo_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -96,6 +112,9 @@ private slots:
         QTest::newRow("report on two threads") << QStringList{"--model", "report", "--threads", "2"};
         QTest::newRow("unknown option") << QStringList{"--fast"};
         QTest::newRow("stray argument") << QStringList{"many-balls"};
+        QTest::newRow("--set of the workload") << QStringList{"--set", "n=5"};
+        QTest::newRow("--set out of range") << QStringList{"--set", "mu=20"};
+        QTest::newRow("--set with the report model") << QStringList{"--model", "report", "--set", "mu=0.5"};
         QTest::newRow("unwritable output") << QStringList{"--balls", "150", "--out", "/nonexistent/dir/b.csv"};
     }
     void badArgumentsExitWithStatusTwo()

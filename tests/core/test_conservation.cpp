@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // What the conservation meter reads from a state, checked against hand-computed physics:
 // energy with the physical model's masses, per unit mass for the report, the spring
-// floor's share; momentum kept by the physical collision and not by the report's speed
+// floor's share, many-balls' rotation; momentum kept by the physical collision and not by the report's speed
 // swap; impacts counted once per wall contact and once per pair, in both many-balls models.
 #include "support/sim_helpers.h"
 
@@ -64,6 +64,23 @@ private slots:
         const ab::ConservationSample rest = ab::measureConservation(*many, two);
         QCOMPARE(rest.energy.total(), 0.0);
         QCOMPARE(rest.moving, 0LL);
+    }
+
+    void manyBallsTurningBallsCountTheirRotation()
+    {
+        // Rough many-balls (physical, r = 2, q = 2/5): |v|^2/2 + q r^2 |w|^2/2 per unit mass,
+        // 1/2 (1 + 4) + 0.4 x 4 x (9 + 16)/2 = 2.5 + 20 for one ball on the floor at rest's height.
+        const auto many = ab::makeSimulation(
+            testing::spec(ab::SceneId::ManyBalls, {"n=1", "r=2", "mu=0.5"}, ab::ModelKind::Physical));
+        ab::State s;
+        s.resize(1);
+        s.p.col(0) = Eigen::Vector3d(0, -50, 0);
+        s.v.col(0) = Eigen::Vector3d(1, 0, 2);
+        s.w.setZero(3, 1);
+        s.w.col(0) = Eigen::Vector3d(0, 3, -4);
+        QVERIFY(near(ab::measureConservation(*many, s).energy.kinetic, 2.5 + 20.0, 1e-14));
+        s.w.resize(3, 0); // a state without spins: translation only
+        QVERIFY(near(ab::measureConservation(*many, s).energy.kinetic, 2.5, 1e-14));
     }
 
     void springFloorEnergyIsItsOwnPart()

@@ -2,12 +2,14 @@
 // The health check on hand-worked steps: the report's stage-1 energy gain of g^2 dt^2 / 2
 // per flight step, a late impact against an escape, the stage-3 swap losing 1 - e of the
 // momentum and repeating, balls passing through each other, the spring's compression,
-// and the stage-4 failures of the report's own rules.
+// the stage-4 failures of the report's own rules, and the angular momentum of a rough ball
+// about its contact point at the floor.
 #include "core/diagnostics/health.h"
 #include "support/sim_helpers.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -288,6 +290,65 @@ private slots:
         h.check(s, s);
         QVERIFY(h.figures().maxOverlap && std::abs(*h.figures().maxOverlap - 0.7) <= 1e-12);
         QVERIFY(mentions(h, "balls 5 and 6 overlap"));
+    }
+    void roughFloorImpactsKeepTheAngularMomentumAboutTheContactPoint_data()
+    {
+        QTest::addColumn<int>("scene");
+        QTest::addColumn<int>("integrator");
+        for (Integrator i :
+             {Integrator::Euler, Integrator::SymplecticEuler, Integrator::Verlet, Integrator::Rk4, Integrator::Event})
+            QTest::newRow(("box3d, " + std::string(integratorKey(i))).c_str())
+                << static_cast<int>(SceneId::Box3d) << static_cast<int>(i);
+        QTest::newRow("many-balls, symplectic-euler")
+            << static_cast<int>(SceneId::ManyBalls) << static_cast<int>(Integrator::SymplecticEuler);
+    }
+    void roughFloorImpactsKeepTheAngularMomentumAboutTheContactPoint()
+    {
+        // A rough ball thrown with spin bounces on the floor, slides and rolls (mu 0.5,
+        // beta 0.6): r n x v + q r^2 w never changes at the floor (S13, S4), to round-off.
+        QFETCH(int, scene);
+        QFETCH(int, integrator);
+        RunSpec spec =
+            scene == static_cast<int>(SceneId::Box3d)
+                ? testing::spec(SceneId::Box3d, {"mu=0.5", "beta=0.6", "p0=100,30,150", "v0=8,0,3", "w0=3,20,-40"},
+                                ModelKind::Physical)
+                : testing::spec(SceneId::ManyBalls,
+                                {"n=1", "mu=0.5", "beta=0.6", "spin=0.5", "g=0.05", "rest_height=0"},
+                                ModelKind::Physical);
+        spec.integrator = static_cast<Integrator>(integrator);
+        const Checked c = runChecked(spec, 3000);
+        QVERIFY(c.health->figures().maxAngularMomentumError.has_value());
+        QVERIFY2(*c.health->figures().maxAngularMomentumError < 1e-12,
+                 qPrintable(QString::number(*c.health->figures().maxAngularMomentumError)));
+        QVERIFY(!mentions(*c.health, "angular momentum"));
+    }
+
+    void spinChangedAtTheFloorWithoutTheTranslationWarns()
+    {
+        // Set down at 5 m/s without spin, a solid ball rolls at 5/7 of it with r w = v (S4):
+        // the same angular momentum about the contact point, no finding. The same ball
+        // spun up without slowing down gained 2/7 of r m v of it: a warning.
+        auto sim = makeSimulation(testing::spec(SceneId::Box3d, {"mu=0.3"}, ModelKind::Physical));
+        State before = oneBall({150, 0, 150}, {5, 0, 0});
+        before.w.setZero(3, 1);
+        State rolled = oneBall({150.05, 0, 150}, {5.0 / 1.4, 0, 0}, 0.01);
+        rolled.w.setZero(3, 1);
+        rolled.w(2, 0) = -5.0 / 1.4; // r = 1
+        HealthCheck kept(*sim, before);
+        QCOMPARE(kept.check(before, rolled), Health::Ok);
+        QVERIFY(kept.figures().maxAngularMomentumError && *kept.figures().maxAngularMomentumError < 1e-15);
+        State spun = rolled;
+        spun.v(0, 0) = 5.0;
+        HealthCheck gained(*sim, before);
+        gained.check(before, spun);
+        QVERIFY(mentions(gained, "angular momentum of ball 0 about its contact point changed by"));
+        QVERIFY(mentions(gained, "energy")); // the spin's energy came from nowhere too
+        const auto found = std::find_if(gained.issues().begin(), gained.issues().end(), [](const auto& s) {
+            return s.finding.kind == diagnostics::FindingKind::AngularMomentum;
+        });
+        QVERIFY(found != gained.issues().end());
+        // 2/7 r v of the 5 r before, over the scale r |v| + q r^2 |w| = 5 + 0.4 x 5/1.4.
+        QVERIFY(std::abs(found->finding.amount - 100.0 * (2.0 / 1.4) / (5.0 + 2.0 / 1.4)) < 1e-9);
     }
 };
 

@@ -5,7 +5,7 @@
 // to rest, fast balls that do not pass through each other, ball indices that stay put
 // while the engine re-orders its arrays, bit-identical runs for any thread count, and the
 // same bits from the AVX2 flight and grid as from the portable ones.
-#include "support/sim_helpers.h"
+#include "support/many_balls_helpers.h"
 
 #include "core/physical/many_balls_physical.h"
 #include "core/random.h"
@@ -28,26 +28,8 @@ Q_DECLARE_METATYPE(ab::Broadphase)
 
 namespace {
 
-// The physical model of many-balls with --set style assignments.
-ab::RunSpec physical(std::initializer_list<std::string> assignments, double dt)
-{
-    ab::RunSpec spec = testing::spec(SceneId::ManyBalls, assignments, ModelKind::Physical);
-    spec.dt = dt;
-    return spec;
-}
-
-State balls(std::initializer_list<std::pair<Vector3d, Vector3d>> pv)
-{
-    State s;
-    s.resize(static_cast<int>(pv.size()));
-    int i = 0;
-    for (const auto& [p, v] : pv) {
-        s.p.col(i) = p;
-        s.v.col(i) = v;
-        ++i;
-    }
-    return s;
-}
+constexpr auto physical = &testing::manyBallsPhysical; // the physical model with --set assignments and dt
+constexpr auto balls = &testing::ballsAt;              // a start from (position, velocity) pairs
 
 double kinetic(const State& s)
 {

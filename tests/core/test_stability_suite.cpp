@@ -83,6 +83,50 @@ private slots:
         }
     }
 
+    void roughSuperballsKeepTheirEnergyOverAMillionSteps()
+    {
+        // k = e = 1, beta = 1, friction that sticks: every impact keeps the energy of
+        // translation and rotation exactly, so over 1e6 steps verlet, rk4 and event end
+        // within 1e-9 of the start energy (box3d's back-and-forth superball, two-balls);
+        // explicit Euler gains, as it does without spin. Many-balls' grazing contacts slide
+        // and lose energy, but it never rises above the start.
+        int checked = 0;
+        for (CaseRow row : findCase("spin-energy-drift")->rows()) {
+            const bool exact = row.integrator == Integrator::Verlet || row.integrator == Integrator::Rk4 ||
+                               row.integrator == Integrator::Event;
+            if (row.scene == SceneId::ManyBalls)
+                row.steps = 20'000;
+            else if (!exact && row.integrator != Integrator::Euler)
+                continue;
+            const RowResult r = runRow(row);
+            const QString where = QString::fromStdString(r.integrator + " " + r.setting + ": " + r.note);
+            QCOMPARE(r.outcome, RowOutcome::Ran);
+            QVERIFY2(r.referenceError.has_value(), qPrintable(where));
+            if (row.scene == SceneId::ManyBalls) {
+                QVERIFY2(r.figures.maxEnergyGain < 1e-9 && *r.referenceError < 0.0, qPrintable(where));
+            } else if (exact) {
+                QVERIFY2(std::abs(*r.referenceError) < 1e-9 && r.figures.maxEnergyGain < 1e-9, qPrintable(where));
+                QVERIFY2(r.verdict == "ok", qPrintable(where));
+            } else {
+                QVERIFY2(*r.referenceError > 0.1 && r.verdict == "failed", qPrintable(where)); // euler gains
+            }
+            ++checked;
+        }
+        QCOMPARE(checked, 7); // box3d euler, verlet, rk4, event; two-balls verlet, event; many-balls
+    }
+
+    void fastBackSpinAtAWallStaysInsideAndLosesEnergy()
+    {
+        // A ball at up to 3000 m/s with ten times as much back-spin meets the wall: every
+        // integrator keeps it in the box, and friction only takes energy away.
+        for (const RowResult& r : runCase("spin-backspin-wall")) {
+            const QString where = QString::fromStdString(r.integrator + " " + r.setting + ": " + r.note);
+            QCOMPARE(r.outcome, RowOutcome::Ran);
+            QVERIFY2(r.figures.escaped == 0 && !r.figures.nonfinite && r.verdict != "failed", qPrintable(where));
+            QVERIFY2(r.referenceError && *r.referenceError < 0.0, qPrintable(where));
+        }
+    }
+
     void valuesOutsideTheTableAreRefused()
     {
         bool sawRefusal = false;

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// What the suite's case files share (cases.cpp, spin_cases.cpp): row builders and the
+// integrator lists, and the cases kept in a file of their own.
+#pragma once
+
+#include "suite.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ab::stability {
+
+// Three significant figures for settings and notes.
+std::string num(double x);
+
+extern const std::vector<Integrator> impulseIntegrators; // every integrator of impulse contacts
+extern const std::vector<Integrator> springIntegrators;  // every integrator of the spring floor
+
+// A report-model row of case `name`.
+CaseRow reportRow(const std::string& name, const std::string& setting, SceneId scene,
+                  std::vector<std::string> assignments, std::optional<double> dt, long long steps);
+// One physical row per integrator.
+std::vector<CaseRow> physicalRows(const CaseRow& base, const std::vector<Integrator>& integrators);
+// Physical rows whose start the model must refuse (the refusal is the outcome checked).
+std::vector<CaseRow> refusedPhysicalRows(const CaseRow& base);
+void append(std::vector<CaseRow>& to, std::vector<CaseRow> rows);
+
+// Rough balls (docs/spin.md, spin_cases.cpp).
+std::vector<CaseRow> spinEnergyDrift();
+std::vector<CaseRow> spinLargeMu();
+std::vector<CaseRow> spinBackspinWall();
+
+} // namespace ab::stability
