@@ -162,6 +162,10 @@
         <source>The report&apos;s bounce limit stopped the motion at t = %1 (Appendix D)</source>
         <translation>Rapportens studsgräns stoppade rörelsen vid t = %1 (bilaga D)</translation>
     </message>
+    <message>
+        <source>The angular momentum of ball %1 about its contact point changed by %2% at the floor at t = %3 (friction at the contact point cannot change it)</source>
+        <translation>Rörelsemängdsmomentet för boll %1 kring dess kontaktpunkt ändrades med %2% vid golvet vid t = %3 (friktion i kontaktpunkten kan inte ändra det)</translation>
+    </message>
 </context>
 <context>
     <name>QMainWindow</name>
@@ -2603,6 +2607,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>compare with %1: the two runs do not start at the same time with the same balls</source>
         <translation>jämför med %1: de två körningarna startar inte vid samma tid med samma bollar</translation>
+    </message>
+    <message>
+        <source>rad/frame</source>
+        <translation>rad/bildruta</translation>
+    </message>
+    <message>
+        <source>start spins: each component of every ball&apos;s w uniform in [-spin, spin], drawn from the seed (0: the balls start without spin)</source>
+        <translation>startrotationer: varje komponent av varje bolls w likformigt fördelad i [-spin, spin], dragen ur fröet (0: bollarna startar utan rotation)</translation>
     </message>
 </context>
 <context>

@@ -305,6 +305,9 @@ const char* const listed[] = {
                               "(2, 20, 2) m and (2, 20, 298) m, with velocities (10, 0, 15) and (10, 0, -15) m/s, and "
                               "meet along z. Instead of eqs 2.4-2.11 the report's code swaps the two velocities and "
                               "scales them by 0.95; run the physical model beside it to see the difference."),
+    QT_TRANSLATE_NOOP("core", "rad/frame"),
+    QT_TRANSLATE_NOOP("core", "start spins: each component of every ball's w uniform in [-spin, spin], drawn from the "
+                              "seed (0: the balls start without spin)"),
     // The refusals (core/input_error.h).
     QT_TRANSLATE_NOOP("core", "%1: %2 is not a number"),
     QT_TRANSLATE_NOOP("core", "%1: %2 is too small for a double (below 4.9e-324); write 0 or a larger value"),

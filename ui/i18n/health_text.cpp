@@ -85,6 +85,11 @@ QString HealthText::what(const diagnostics::Finding& f, double t, const SceneInf
         return tr("Ball %1 lies on the floor with speed %2 at t = %3 but does not move")
             .arg(ballOf(f, 0))
             .arg(figure(f.amount), at);
+    case FindingKind::AngularMomentum:
+        return tr("The angular momentum of ball %1 about its contact point changed by %2% at the floor at t = %3 "
+                  "(friction at the contact point cannot change it)")
+            .arg(ballOf(f, 0))
+            .arg(figure(f.amount), at);
     }
     return {};
 }
