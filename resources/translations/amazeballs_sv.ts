@@ -1462,10 +1462,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>t = %1 %2</translation>
     </message>
     <message>
-        <source>step %1</source>
-        <translation>steg %1</translation>
-    </message>
-    <message>
         <source>E/m = %1 %2%3/%4%3</source>
         <translation>E/m = %1 %2%3/%4%3</translation>
     </message>
@@ -1524,6 +1520,34 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>%1 of %2 balls lie on the floor with a velocity but do not move: Appendix D updates only balls above the floor, so a ball keeps the velocity it reached the floor with, and the kinetic energy and momentum charts go on counting it</source>
         <translation>%1 av %2 bollar ligger på golvet med en hastighet men rör sig inte: bilaga D uppdaterar bara bollar ovanför golvet, så en boll behåller hastigheten den nådde golvet med, och diagrammen för rörelseenergi och rörelsemängd fortsätter att räkna med den</translation>
+    </message>
+    <message>
+        <source>The run stopped</source>
+        <translation>Körningen stoppades</translation>
+    </message>
+    <message>
+        <source>Paused: the health check failed</source>
+        <translation>Pausad: hälsokontrollen slog larm</translation>
+    </message>
+    <message>
+        <source>The health check failed</source>
+        <translation>Hälsokontrollen slog larm</translation>
+    </message>
+    <message>
+        <source>The report&apos;s rules at work</source>
+        <translation>Rapportens regler verkar</translation>
+    </message>
+    <message>
+        <source>A health check warning</source>
+        <translation>En varning från hälsokontrollen</translation>
+    </message>
+    <message>
+        <source>The run is complete</source>
+        <translation>Körningen är klar</translation>
+    </message>
+    <message>
+        <source>%1 per step</source>
+        <translation>%1 per steg</translation>
     </message>
 </context>
 <context>

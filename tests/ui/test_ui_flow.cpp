@@ -28,6 +28,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSlider>
+#include <QToolButton>
 #include <QtTest>
 
 #include <cmath>
@@ -355,6 +356,35 @@ private slots:
         QTRY_VERIFY2(w.readout()->warningText().contains("below the floor"), qPrintable(w.readout()->warningText()));
         QVERIFY(w.readout()->warningText().contains("Appendix C"));
         QVERIFY(w.readout()->warningText().contains("0.000982 m"));
+    }
+
+    // At 1280x720 in lecture mode the bar held "150 of 150 balls lie on the floor with a
+    // velocity b": cut mid-word. A headline that does not fit whole gives way to the kind
+    // of message, with Details beside it; a wide window shows the headline again.
+    void aLongMessageInTheStatusBarIsNeverCutMidWord()
+    {
+        ab::ui::WindowShell shell;
+        MainWindow& w = shell.window();
+        w.resize(1280, 720);
+        w.show();
+        shell.lecture().setActive(true);
+        w.showScene(SceneId::ManyBalls);
+        QVERIFY(stepOn(w, 1000));
+        w.transport()->goLive();
+        QTRY_VERIFY2(w.readout()->warningText().contains("Appendix D"), qPrintable(w.readout()->warningText()));
+        auto* label = w.findChild<QLabel*>("statusWarning");
+        QVERIFY(label);
+        auto fitsWhole = [label] {
+            return label->fontMetrics().horizontalAdvance(label->text()) <= label->contentsRect().width();
+        };
+        QTRY_VERIFY2(fitsWhole(), qPrintable(QStringLiteral("'%1' in %2 px").arg(label->text()).arg(label->width())));
+        QCOMPARE(label->text(), w.readout()->warningShown());
+        QVERIFY(w.readout()->warningText().startsWith(label->text()) || label->text() == "The report's rules at work");
+        QVERIFY(w.readout()->detailsButton()->isVisible()); // the whole message is a click away
+        shell.lecture().setActive(false);
+        w.resize(1900, 1000);
+        QTRY_VERIFY2(label->text().endsWith("do not move"), qPrintable(label->text()));
+        QVERIFY(fitsWhole());
     }
 
     void aLanguageSwitchKeepsTheRun()

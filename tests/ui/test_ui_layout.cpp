@@ -193,10 +193,6 @@ QStringList cutTexts(QWidget* root)
     for (QWidget* w : all) {
         if (!w->isVisible() || w->visibleRegion().isEmpty())
             continue;
-        // The status bar's health message is one line with its full text on hover until it
-        // opens in a details area of its own (issue 12, item 5).
-        if (w->objectName() == QLatin1String("statusWarning"))
-            continue;
         if (auto* label = qobject_cast<QLabel*>(w))
             checkLabel(label, cut);
         else if (auto* button = qobject_cast<QAbstractButton*>(w))

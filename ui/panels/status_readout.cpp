@@ -5,6 +5,7 @@
 #include "ui/i18n/health_text.h"
 
 #include <QApplication>
+#include <QEvent>
 #include <QFrame>
 #include <QLabel>
 
@@ -13,7 +14,6 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
-#include <algorithm>
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +84,7 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     warning_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     warning_->setMinimumWidth(120);
     bar->addWidget(warning_, 1);
+    warning_->installEventFilter(this); // a new width may fit the headline, or no longer
     details_ = new QToolButton;
     details_->setObjectName("statusDetails");
     details_->setText(tr("Details"));
@@ -116,7 +117,7 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
     const QString timeUnit = info ? coreText(info->timeUnit) : QString();
     const QString lengthUnit = info ? coreText(info->lengthUnit) : QString();
     time_->setText(tr("t = %1 %2").arg(QString::number(t, 'f', t < 100 ? 2 : 1), timeUnit));
-    step_->setText(tr("step %1").arg(formatDuration(s.stepSeconds)));
+    step_->setText(tr("%1 per step").arg(formatDuration(s.stepSeconds))); // "t = 855 step step 2 us" read as one
     const QString sq = QString::fromUtf8("\u00b2");
     const QString value = QString::number(energy, 'g', 5);
     if (!s.energyPerUnitMass) // the physical model's masses are in kg
@@ -129,12 +130,30 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
         fitText(reading);
     const Message m = messageFor(s, shown, back);
     full_ = m.full;
-    warning_->setText(m.headline);
+    shownMessage_ = m;
     warning_->setToolTip(m.full);
     setColour(warning_, m.tone == Tone::Severe   ? std::optional(Shade::Severe)
                         : m.tone == Tone::Notice ? std::optional(Shade::Notice)
                                                  : std::nullopt);
-    details_->setVisible(m.full != m.headline);
+    fitWarning();
+}
+
+void StatusReadout::fitWarning()
+{
+    const Message& m = shownMessage_;
+    const int room = warning_->contentsRect().width();
+    const bool whole = warning_->fontMetrics().horizontalAdvance(m.headline) <= room;
+    const QString text = whole || m.brief.isEmpty() ? m.headline : m.brief;
+    if (warning_->text() != text)
+        warning_->setText(text);
+    details_->setVisible(m.full != text);
+}
+
+bool StatusReadout::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == warning_ && (event->type() == QEvent::Resize || event->type() == QEvent::FontChange))
+        fitWarning();
+    return QObject::eventFilter(watched, event);
 }
 
 StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Frame* shown, bool back) const
@@ -150,21 +169,24 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
     // run paused on it), the report's own rules at work, then a warning of the check.
     if (!s.warning.empty() && !back) {
         if (finding && s.worst.finding.kind == diagnostics::FindingKind::NonFinite)
-            return {tr("Stopped: %1").arg(found.headline()), tr("Stopped: %1").arg(found.full()), Tone::Severe};
+            return {tr("Stopped: %1").arg(found.headline()), tr("Stopped: %1").arg(found.full()), Tone::Severe,
+                    tr("The run stopped")};
         const QString text = tr("Stopped: %1").arg(QString::fromStdString(s.warning));
-        return {text, text, Tone::Severe};
+        return {text, text, Tone::Severe, tr("The run stopped")};
     }
     if (finding && s.worst.level == diagnostics::Health::Failed) {
-        const QString paused = s.pausedOnHealth && !back ? tr("Paused: %1") : QStringLiteral("%1");
-        return {paused.arg(found.headline()), paused.arg(found.full()), Tone::Severe};
+        const bool paused = s.pausedOnHealth && !back;
+        const QString form = paused ? tr("Paused: %1") : QStringLiteral("%1");
+        return {form.arg(found.headline()), form.arg(found.full()), Tone::Severe,
+                paused ? tr("Paused: the health check failed") : tr("The health check failed")};
     }
     if (const auto rules = reportRulesAt(s, shown, back))
-        return {rules->section(QStringLiteral(": "), 0, 0), *rules, Tone::Notice};
+        return {rules->section(QStringLiteral(": "), 0, 0), *rules, Tone::Notice, tr("The report's rules at work")};
     if (finding)
-        return {found.headline(), found.full(), Tone::Notice};
+        return {found.headline(), found.full(), Tone::Notice, tr("A health check warning")};
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
-        return {text, text, Tone::Plain};
+        return {text, text, Tone::Plain, tr("The run is complete")};
     }
     return {};
 }
@@ -248,6 +270,11 @@ void StatusReadout::setFrameRate(double fps)
 QString StatusReadout::warningText() const
 {
     return full_;
+}
+
+QString StatusReadout::warningShown() const
+{
+    return warning_->text();
 }
 
 QString StatusReadout::timeText() const

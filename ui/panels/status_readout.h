@@ -5,7 +5,9 @@
 // the report's own rules at work (its bounce counter, balls that keep a velocity on the
 // floor, a ball left below the floor) or a health warning in amber. Findings and notices
 // are worded here, in the window's language and words, from the core's data; a message
-// longer than the bar shows its first part, and Details opens the whole of it.
+// longer than the bar shows its first part, and Details opens the whole of it; where even
+// that part would not fit the bar whole, the bar names the kind of message instead
+// ("The report's rules at work"), so no message is ever cut mid-word.
 #pragma once
 
 #include "ui/sim/recording.h"
@@ -26,6 +28,8 @@ namespace ab::ui {
 class StatusReadout : public QObject {
     Q_OBJECT
 public:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
     explicit StatusReadout(QStatusBar* bar);
 
     // The run the readings are of: its scene's units, model and constants.
@@ -35,6 +39,7 @@ public:
     void show(const EngineStatus& status, const Frame* shown = nullptr, bool lookingBack = false);
     void setFrameRate(double fps); // negative: no 3D view
     QString warningText() const;   // the whole message (also what Details shows)
+    QString warningShown() const;  // what the bar shows of it
     QString timeText() const;
     QString energyText() const;
     QToolButton* detailsButton() const { return details_; }
@@ -44,10 +49,12 @@ private:
     struct Message {
         QString headline, full;
         Tone tone = Tone::Plain;
+        QString brief; // the kind of message, for a bar too narrow for the headline
     };
     Message messageFor(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
     std::optional<QString> reportRulesAt(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
     void showDetails();
+    void fitWarning(); // the headline where it fits whole, else the brief
 
     QLabel* time_;
     QLabel* step_;
@@ -57,6 +64,7 @@ private:
     QToolButton* details_;
     QFrame* popup_ = nullptr;
     QString full_;
+    Message shownMessage_;
     std::optional<RunSpec> spec_;
 };
 
