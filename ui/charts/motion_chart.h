@@ -158,4 +158,10 @@ private:
     std::array<std::vector<double>, 3> diffRun_;
 };
 
+// The height `chart` needs at `width` pixels to read whole: its title, the legend's rows,
+// the time axis's labels and title, and a plot at least as tall as the value axis's title
+// is long (Qt Charts cuts a longer one to "...") and six tick labels high. The chart panel
+// pages its charts by it, and an exported clip stacks as many as fit at it.
+int readableHeight(const MotionChart& chart, int width);
+
 } // namespace ab::ui

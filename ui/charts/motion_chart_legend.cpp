@@ -3,9 +3,12 @@
 // which entries the chart's lines get, and the chart's margin that makes room for them.
 #include "motion_chart.h"
 
+#include <QFontMetrics>
 #include <QGraphicsSceneResizeEvent>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -103,6 +106,24 @@ void MotionChart::updateLegend()
     }
     legend_->setEntries(std::move(entries));
     placeLegend();
+}
+
+int readableHeight(const MotionChart& c, int width)
+{
+    const QFontMetrics title(c.titleFont()), legend(c.legend()->font());
+    const QFontMetrics labels(c.valueAxis()->labelsFont()), axisTitle(c.valueAxis()->titleFont());
+    int legendWidth = 0;
+    for (QLegendMarker* m : c.legend()->markers())
+        if (m->isVisible() && m->series()->isVisible())
+            legendWidth += legend.horizontalAdvance(m->label()) + 2 * legend.height() + 8;
+    width = std::max(width, 200);
+    const int legendRows = std::max(1, (legendWidth + width - 1) / width);
+    const int plot = std::max(axisTitle.horizontalAdvance(c.valueAxis()->titleText()) + 24, 6 * labels.height());
+    // The legend is drawn in the chart's bottom margin, which is made as tall as it once
+    // the chart is laid out; before that, its rows as estimated here.
+    const int legendBand = std::max(int(1.5 * legend.height()) * legendRows, c.margins().bottom());
+    return int(1.5 * title.height()) + legendBand + c.margins().top() + 2 * labels.height() + axisTitle.height() +
+           plot + 24;
 }
 
 } // namespace ab::ui

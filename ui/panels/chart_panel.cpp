@@ -241,28 +241,9 @@ bool ChartPanel::onCurrentPage(ChartKind kind) const
 
 int ChartPanel::readableChartHeight() const
 {
-    // Title, the legend's rows, the time axis's labels and title, and a plot at least as
-    // tall as the value axis's title is long (Qt Charts cuts a longer one to "...") and
-    // four tick labels high.
     int tallest = 200;
-    for (ChartKind kind : shownCharts()) {
-        const MotionChart* c = charts_[slot(kind)];
-        const QFontMetrics title(c->titleFont()), legend(c->legend()->font());
-        const QFontMetrics labels(c->valueAxis()->labelsFont()), axisTitle(c->valueAxis()->titleFont());
-        int legendWidth = 0;
-        for (QLegendMarker* m : c->legend()->markers())
-            if (m->isVisible() && m->series()->isVisible())
-                legendWidth += legend.horizontalAdvance(m->label()) + 2 * legend.height() + 8;
-        const int width = std::max(views_[slot(kind)]->width(), 200);
-        const int legendRows = std::max(1, (legendWidth + width - 1) / width);
-        const int plot = std::max(axisTitle.horizontalAdvance(c->valueAxis()->titleText()) + 24, 6 * labels.height());
-        // The legend is drawn in the chart's bottom margin, which is made as tall as it once
-        // the chart is laid out; before that, its rows as estimated here.
-        const int legendBand = std::max(int(1.5 * legend.height()) * legendRows, c->margins().bottom());
-        const int h = int(1.5 * title.height()) + legendBand + c->margins().top() + 2 * labels.height() +
-                      axisTitle.height() + plot + 24;
-        tallest = std::max(tallest, h);
-    }
+    for (ChartKind kind : shownCharts())
+        tallest = std::max(tallest, readableHeight(*charts_[slot(kind)], views_[slot(kind)]->width()));
     return tallest;
 }
 

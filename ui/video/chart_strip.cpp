@@ -27,22 +27,36 @@ ChartStrip::ChartStrip(const Simulation& sim, int ball, const std::vector<ChartK
 {
     if (kinds.empty())
         return;
-    // As many charts as fit at kMinHeight pixels each (the first ones: position and
-    // velocity come first), each drawn at least kMinHeight tall and scaled to its slot,
-    // so the window's fonts keep their size relative to the plot.
-    const int n = std::clamp(size.height() / kMinHeight, 1, int(kinds.size()));
-    for (int i = 0; i < n; ++i) {
-        const int top = size.height() * i / n, bottom = size.height() * (i + 1) / n;
+    // As many charts as fit at the height each needs to read whole (readableHeight: a
+    // velocity chart's rotated axis title sets it, which 220 pixels cut to "velocity
+    // (unit/st..."), the first ones first: position and velocity. Each is drawn at least
+    // that tall and scaled to its slot, so the window's fonts keep their size relative to
+    // the plot and no text is cut.
+    const ConservationMeter meter(sim);
+    std::vector<int> need;
+    for (ChartKind kind : kinds) {
+        MotionChart probe(kind);
+        probe.configure(sim.scene(), ball, ChartUnits{meter.perUnitMass(), meter.hasSpring()});
+        need.push_back(std::max(kMinHeight, readableHeight(probe, size.width())));
+    }
+    std::size_t n = 1;
+    for (int tallest = need[0]; n < kinds.size(); ++n) {
+        tallest = std::max(tallest, need[n]);
+        if (int(n + 1) * tallest > size.height())
+            break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const int top = size.height() * int(i) / int(n), bottom = size.height() * int(i + 1) / int(n);
         panels_.push_back(
-            drawPanel(sim, ball, kinds[std::size_t(i)], track, tEnd, QRect(0, top, size.width(), bottom - top)));
+            drawPanel(sim, ball, kinds[i], track, tEnd, QRect(0, top, size.width(), bottom - top), need[i]));
     }
 }
 
 ChartStrip::Panel ChartStrip::drawPanel(const Simulation& sim, int ball, ChartKind kind, const MotionTrack& track,
-                                        double tEnd, QRect rect)
+                                        double tEnd, QRect rect, int need)
 {
     const ConservationMeter meter(sim);
-    const double scale = std::min(1.0, double(rect.height()) / kMinHeight); // pixels per chart unit
+    const double scale = std::min(1.0, double(rect.height()) / need); // pixels per chart unit
     const QSizeF logical(rect.width() / scale, rect.height() / scale);
     MotionChart chart(kind);
     chart.configure(sim.scene(), ball, ChartUnits{meter.perUnitMass(), meter.hasSpring()});

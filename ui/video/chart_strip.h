@@ -42,9 +42,10 @@ private:
         double top = 0, bottom = 0;
         QPen pen;
     };
-    static constexpr int kMinHeight = 220; // pixels a chart needs for the window's fonts
+    static constexpr int kMinHeight = 220; // pixels a chart takes at the least, for the window's fonts
+    // `need`: the height at which the chart reads whole; a smaller slot scales it down.
     static Panel drawPanel(const Simulation& sim, int ball, ChartKind kind, const MotionTrack& track, double tEnd,
-                           QRect rect);
+                           QRect rect, int need);
 
     std::vector<Panel> panels_;
 };
