@@ -129,8 +129,7 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
     for (QLabel* reading : {time_, step_, energy_})
         fitText(reading);
     const Message m = messageFor(s, shown, back);
-    full_ = m.full;
-    shownMessage_ = m;
+    message_ = m;
     warning_->setToolTip(m.full);
     setColour(warning_, m.tone == Tone::Severe   ? std::optional(Shade::Severe)
                         : m.tone == Tone::Notice ? std::optional(Shade::Notice)
@@ -140,7 +139,7 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
 
 void StatusReadout::fitWarning()
 {
-    const Message& m = shownMessage_;
+    const Message& m = message_;
     const int room = warning_->contentsRect().width();
     const bool whole = warning_->fontMetrics().horizontalAdvance(m.headline) <= room;
     const QString text = whole || m.brief.isEmpty() ? m.headline : m.brief;
@@ -250,7 +249,7 @@ void StatusReadout::showDetails()
         layout->addWidget(text);
     }
     auto* text = popup_->findChild<QLabel*>("statusDetailsText");
-    text->setText(full_);
+    text->setText(message_.full);
     QWidget* window = warning_->window();
     const int width = std::max(320, window->width() / 2);
     popup_->setFixedWidth(width);
@@ -269,7 +268,7 @@ void StatusReadout::setFrameRate(double fps)
 
 QString StatusReadout::warningText() const
 {
-    return full_;
+    return message_.full;
 }
 
 QString StatusReadout::warningShown() const

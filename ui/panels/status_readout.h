@@ -28,9 +28,8 @@ namespace ab::ui {
 class StatusReadout : public QObject {
     Q_OBJECT
 public:
-    bool eventFilter(QObject* watched, QEvent* event) override;
-
     explicit StatusReadout(QStatusBar* bar);
+    bool eventFilter(QObject* watched, QEvent* event) override; // refits the message to its label
 
     // The run the readings are of: its scene's units, model and constants.
     void setRun(const RunSpec& spec);
@@ -63,8 +62,7 @@ private:
     QLabel* warning_;
     QToolButton* details_;
     QFrame* popup_ = nullptr;
-    QString full_;
-    Message shownMessage_;
+    Message message_; // the message of the moment shown (Details opens its whole text)
     std::optional<RunSpec> spec_;
 };
 
