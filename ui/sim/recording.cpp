@@ -14,12 +14,18 @@ Frame makeFrame(long long step, const State& s, const ConservationSample& scene)
     const auto n = static_cast<std::size_t>(s.size());
     f.p.resize(3 * n);
     f.v.resize(3 * n);
+    if (s.spins())
+        f.w.resize(3 * n);
     for (std::size_t i = 0; i < n; ++i) {
         for (int a = 0; a < 3; ++a) {
             f.p[3 * i + a] = static_cast<float>(s.p(a, static_cast<Eigen::Index>(i)));
             f.v[3 * i + a] = static_cast<float>(s.v(a, static_cast<Eigen::Index>(i)));
         }
     }
+    if (s.spins())
+        for (std::size_t i = 0; i < n; ++i)
+            for (int a = 0; a < 3; ++a)
+                f.w[3 * i + a] = static_cast<float>(s.w(a, static_cast<Eigen::Index>(i)));
     return f;
 }
 
@@ -33,9 +39,9 @@ Frame makeFrame(long long step, const State& s, const ConservationMeter& meter)
 
 Recording::Recording(const SceneLayout& layout, const ConservationMeter& meter, int trackedBall,
                      std::size_t frameBudgetBytes, std::size_t trackCapacity)
-    : layout_(layout), meter_(meter), trackedBall_(trackedBall), track_(trackCapacity)
+    : layout_(layout), meter_(meter), trackedBall_(trackedBall), frameBudget_(frameBudgetBytes), track_(trackCapacity)
 {
-    // A frame holds 6 floats per ball.
+    // A frame holds 6 floats per ball until the first frame tells (more where the balls turn).
     const std::size_t frameBytes = 6 * sizeof(float) * static_cast<std::size_t>(std::max(layout.balls, 1));
     maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 2); // two at least; the start is always kept
 }
@@ -48,6 +54,8 @@ void Recording::add(long long step, const State& s)
     if (step % frameStride_ != 0)
         return;
     frames_.push_back(makeFrame(step, s, scene));
+    if (frames_.size() == 1)
+        maxFrames_ = std::max<std::size_t>(frameBudget_ / std::max<std::size_t>(frames_.front().bytes(), 1), 2);
     while (frames_.size() > maxFrames_)
         thinFrames();
 }

@@ -22,9 +22,23 @@ struct Frame {
     double t = 0.0;
     std::vector<float> p;
     std::vector<float> v;
+    // Angular velocities, x, y, z per ball, where the balls turn (State::spins()); empty
+    // where they do not.
+    std::vector<float> w;
     ConservationSample scene; // of all balls: energy, momentum, moving balls, impacts
 
     int balls() const { return static_cast<int>(p.size() / 3); }
+    bool spins() const { return !w.empty(); }
+    // What the frame's numbers take (the recording's budget counts it).
+    std::size_t bytes() const { return sizeof(float) * (p.size() + v.size() + w.size()); }
+    // Ball i's angular velocity; zero where the frame has none.
+    Eigen::Vector3d spin(int i) const
+    {
+        if (w.empty())
+            return Eigen::Vector3d::Zero();
+        const auto k = static_cast<std::size_t>(3 * i);
+        return {w[k], w[k + 1], w[k + 2]};
+    }
 };
 
 // The frame of `s` and, in the same pass over the balls, what `meter` measures of it.
@@ -66,6 +80,7 @@ private:
     SceneLayout layout_;
     ConservationMeter meter_;
     int trackedBall_;
+    std::size_t frameBudget_;
     std::size_t maxFrames_;
     long long frameStride_ = 1;
     std::vector<Frame> frames_;
