@@ -7,6 +7,7 @@
 #include "charts/run_description.h"
 #include "i18n/core_text.h"
 #include "panels/parameter_panel.h"
+#include "panels/spin_equations.h"
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
@@ -86,9 +87,10 @@ void MainWindow::showScene(SceneId scene)
     showPanels(scene);
 }
 
-std::optional<QString> MainWindow::showSetup(const RunSpec& spec, const RunOptions& options)
+std::optional<QString> MainWindow::showSetup(const RunSpec& spec, const RunOptions& options,
+                                             std::optional<double> speed)
 {
-    const Setup candidate{spec, options, defaultSpeed(spec.scene)};
+    const Setup candidate{spec, options, speed.value_or(defaultSpeed(spec.scene))};
     if (auto error = startRun(candidate))
         return error;
     setups_.insert_or_assign(spec.scene, candidate);
@@ -157,6 +159,7 @@ void MainWindow::runReplaced()
                                      : QString();
     charts_->setComparison(RunDescription::runLabel(spec), compareLabel);
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
+    navigator_->setRunSection(SpinEquations::html(controller_.engine().simulation()));
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
@@ -176,7 +179,7 @@ void MainWindow::runReplaced()
 ChartUnits MainWindow::chartUnits() const
 {
     const ConservationMeter meter(controller_.engine().simulation());
-    return ChartUnits{meter.perUnitMass(), meter.hasSpring()};
+    return chartUnitsOf(meter);
 }
 
 void MainWindow::ballSelected(int ball)

@@ -49,7 +49,8 @@ public:
     RunOptions options() { return setupFor(scene_).options; }
     // Shows `spec`'s stage with these options as its remembered setup (a preset). Returns
     // the core's refusal (also shown), and then nothing changes.
-    std::optional<QString> showSetup(const RunSpec& spec, const RunOptions& options);
+    std::optional<QString> showSetup(const RunSpec& spec, const RunOptions& options,
+                                     std::optional<double> speed = std::nullopt);
 
     // Exports; each throws InputError naming the path and the reason. A chart is drawn
     // for its size (a report's column by default), with the caption and the time cursor

@@ -104,7 +104,9 @@ void MainWindow::exportDataTo(const QString& path)
     data.closedForm = closedForm ? &*closedForm : nullptr;
     data.timeUnit = sceneInfo(scene_).timeUnit;
     data.lengthUnit = sceneInfo(scene_).lengthUnit;
-    data.perUnitMass = chartUnits().perUnitMass;
+    const ChartUnits units = chartUnits();
+    data.perUnitMass = units.perUnitMass;
+    data.spins = units.spins;
     const RunFacts facts{&sim.spec(), sim.dt()};
     const RunFacts compareFacts{other ? &other->simulation().spec() : nullptr, other ? other->simulation().dt() : 0.0};
     data.comments = RunDescription::comments(facts, other ? &compareFacts : nullptr, closedForm.has_value(), data.ball,

@@ -129,7 +129,7 @@ ui::MotionTrack simulate(Simulation& sim, long long steps, int ball, std::ostrea
             healthy = healthy && s.p.allFinite() && s.v.allFinite();
             if (!healthy)
                 return;
-            track.add(index++, s.t, s.p.col(ball), s.v.col(ball), meter.measure(s));
+            track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s));
         },
         [&] { return !healthy || interrupted(); });
     throwIfInterrupted();
@@ -194,11 +194,14 @@ ui::ReferenceMotion motionOf(const reference::Reference& r, int ball)
                                }};
 }
 
-void checkApplies(ui::ChartKind kind, SceneId scene)
+void checkApplies(ui::ChartKind kind, const RunSpec& spec)
 {
-    if (ui::chartApplies(kind, scene))
+    if (ui::chartApplies(kind, spec))
         return;
-    const std::string key = sceneInfo(scene).key;
+    const std::string key = sceneInfo(spec.scene).key;
+    if (kind == ui::ChartKind::Spin)
+        throw InputError("--chart: the spin chart needs balls that turn: --model physical with mu > 0 and beta > -1, "
+                         "or a start spin (w0, w1, w2, spin)");
     throw InputError("--chart: the " + std::string(ui::chartKey(kind)) + " chart is for " +
                      (kind == ui::ChartKind::Momentum ? "two-balls and many-balls" : "many-balls") + " only, not " +
                      key);
@@ -235,7 +238,7 @@ ChartRequest readRequest(Parsed& args)
             throw InputError("--data: " + printableInput(*r.dataPath) + " must end in .csv");
         checkWritable(*r.dataPath);
     }
-    checkApplies(r.kind, r.setup.spec.scene);
+    checkApplies(r.kind, r.setup.spec);
     return r;
 }
 
@@ -274,7 +277,7 @@ int chartCommand(Parsed& args, std::ostream&, std::ostream& err)
     recipe.kind = kind;
     recipe.scene = &sim->scene();
     recipe.ball = ball;
-    recipe.units = ui::ChartUnits{meter.perUnitMass(), meter.hasSpring()};
+    recipe.units = ui::chartUnitsOf(meter);
     recipe.tEnd = tEnd;
     recipe.run = &track;
     recipe.runName = QString::fromStdString(
@@ -301,6 +304,7 @@ int chartCommand(Parsed& args, std::ostream&, std::ostream& err)
         data.timeUnit = sim->scene().timeUnit;
         data.lengthUnit = sim->scene().lengthUnit;
         data.perUnitMass = recipe.units.perUnitMass;
+        data.spins = recipe.units.spins;
         data.comments =
             ui::RunDescription::comments(facts, other ? &compareFacts : nullptr, bool(r), ball, start.size());
         writeFileAtomically(*dataPath, [&](std::ostream& out) { ui::writeChartCsv(out, data); });

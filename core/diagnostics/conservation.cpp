@@ -17,7 +17,32 @@ double ballRadius(const RunSpec& spec)
     return hasRadius ? spec.params.real("r") : 1.0;
 }
 
+bool nonZeroVector(const ParamValues& v, const char* key)
+{
+    return v.indexOf(key) && !v.vector(key).isZero(0.0);
+}
+
 } // namespace
+
+bool ballsTurn(const RunSpec& spec)
+{
+    if (spec.model != ModelKind::Physical)
+        return false;
+    const ParamValues& v = spec.params;
+    if (spec.init && spec.init->spins() && !spec.init->w.isZero(0.0))
+        return true;
+    switch (spec.scene) {
+    case SceneId::Bounce1d: // its ball spins only about the vertical, which the floor never changes
+        return v.indexOf("w0") && v.real("w0") != 0.0;
+    case SceneId::Box3d:
+        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || nonZeroVector(v, "w0");
+    case SceneId::TwoBalls:
+        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || nonZeroVector(v, "w1") || nonZeroVector(v, "w2");
+    case SceneId::ManyBalls:
+        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || v.real("spin") > 0.0;
+    }
+    return false;
+}
 
 ConservationMeter::ConservationMeter(const Simulation& sim)
 {
@@ -26,6 +51,7 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
     // Stage 4's box is centred at the origin (Appendix D): its floor is y = -L/2.
     floor_ = spec.scene == SceneId::ManyBalls ? -spec.params.real("box") / 2.0 : 0.0;
     world_ = physical::worldOf(sim);
+    turns_ = ballsTurn(spec);
     if (world_) {
         mass_ = world_->mass;
     } else if (spec.model == ModelKind::Physical && spec.scene == SceneId::Bounce1d &&
@@ -63,6 +89,7 @@ ConservationSample ConservationMeter::measureWorld(const State& s) const
     ConservationSample out;
     const physical::KineticPotential e = physical::energyParts(*world_, s);
     out.energy.kinetic = e.kinetic + e.rotational; // a turning ball's energy is kinetic too
+    out.energy.rotation = e.rotational;
     out.energy.potential = e.potential;
     const double moving2 = movingSpeed_ * movingSpeed_;
     for (int i = 0; i < s.size(); ++i) {
@@ -96,8 +123,10 @@ ConservationSample ConservationMeter::measureEqualMasses(const State& s) const
     }
     ConservationSample out;
     out.energy.kinetic = 0.5 * m * v2sum;
-    if (spinInertia_ > 0.0 && s.spins()) // a turning ball's energy I |w|^2 / 2 is kinetic too
-        out.energy.kinetic += 0.5 * m * spinInertia_ * s.w.squaredNorm();
+    if (spinInertia_ > 0.0 && s.spins()) { // a turning ball's energy I |w|^2 / 2 is kinetic too
+        out.energy.rotation = 0.5 * m * spinInertia_ * s.w.squaredNorm();
+        out.energy.kinetic += out.energy.rotation;
+    }
     out.energy.potential = m * g_ * heights;
     out.momentum = m * Eigen::Vector3d(px, py, pz);
     out.moving = moving;

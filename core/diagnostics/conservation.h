@@ -27,10 +27,12 @@
 namespace ab {
 
 struct EnergyParts {
-    double kinetic = 0.0;   // sum of 1/2 m |v|^2
+    double kinetic = 0.0;   // sum of 1/2 m |v|^2, and of 1/2 I |w|^2 where the balls turn
     double potential = 0.0; // sum of m g (y - floor)
     double spring = 0.0;    // stored in the spring floor (bounce1d, physical, contact 1 or 2); else 0
+    double rotation = 0.0;  // the rotational part of `kinetic`, sum of 1/2 I |w|^2 (0 without spin)
     double total() const { return kinetic + potential + spring; }
+    double translation() const { return kinetic - rotation; } // sum of 1/2 m |v|^2
 };
 
 struct ConservationSample {
@@ -49,6 +51,8 @@ public:
 
     bool perUnitMass() const { return mass_.empty(); }
     bool hasSpring() const { return spring_.has_value(); }
+    // Whether the run's balls turn (ballsTurn): its energy then has a rotational part.
+    bool turns() const { return turns_; }
     double floor() const { return floor_; }
     // A ball slower than this counts as at rest (see the .cpp for why this value).
     double movingSpeed() const { return movingSpeed_; }
@@ -66,7 +70,14 @@ private:
     std::optional<physical::SpringFloor> spring_;
     const physical::World* world_ = nullptr; // the physical model's, when the simulation has one (not owned)
     double spinInertia_ = 0.0;               // q r^2 of many-balls' turning balls (docs/spin.md); 0 elsewhere
+    bool turns_ = false;
 };
+
+// Whether the balls of a run can turn (docs/spin.md): the physical model with rough
+// contacts (mu > 0 and beta > -1, where the scene has them) or a start spin (`w0`, `w1`,
+// `w2`, many-balls' `spin`, or an `--init` state with spins). The report model's balls
+// never turn: it has no rotation.
+bool ballsTurn(const RunSpec& spec);
 
 // The meter built for `sim`, applied to `s` (convenient for one state; a run builds the
 // meter once).

@@ -240,7 +240,7 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Document& 
 
 PresetView readView(const Document& v, const Where& at)
 {
-    checkObject(v, at, {"camera", "charts", "selected_ball", "compare"});
+    checkObject(v, at, {"camera", "charts", "selected_ball", "compare", "speed"});
     PresetView view;
     if (const Document* camera = find(v, "camera")) {
         const Where c = at / "camera";
@@ -259,6 +259,8 @@ PresetView readView(const Document& v, const Where& at)
         for (std::size_t i = 0; i < charts->size(); ++i)
             view.charts.push_back(text((*charts)[i], (at / "charts")[i]));
     }
+    if (const Document* speed = find(v, "speed"))
+        view.speed = number(*speed, at / "speed");
     if (const Document* ball = find(v, "selected_ball"))
         view.selectedBall = static_cast<int>(whole(*ball, at / "selected_ball", 0, 1e9));
     if (const Document* compare = find(v, "compare")) {
@@ -315,6 +317,8 @@ void checkView(const PresetView& view, const Where& at, long long ballCount)
         (at / "selected_ball")
             .fail(std::to_string(*view.selectedBall) + " is not a ball of this scene (balls 0 to " +
                   std::to_string(ballCount - 1) + ")");
+    if (view.speed && !(*view.speed >= 0.1 && *view.speed <= 10.0))
+        (at / "speed").fail(shown(*view.speed) + " is outside [0.1, 10] times real time");
     if (view.compare && view.compare->dt && !(*view.compare->dt > 0.0 && std::isfinite(*view.compare->dt)))
         (at / "compare" / "dt").fail(shown(*view.compare->dt) + " must be a positive step");
 }
@@ -382,6 +386,8 @@ Document viewValue(const PresetView& view)
         out["charts"] = view.charts;
     if (view.selectedBall)
         out["selected_ball"] = static_cast<double>(*view.selectedBall);
+    if (view.speed)
+        out["speed"] = *view.speed;
     if (view.compare) {
         Document compare = Document::object();
         compare["model"] = std::string(modelKey(view.compare->model));
@@ -496,7 +502,8 @@ void savePreset(const std::filesystem::path& path, const Preset& preset)
 
 const std::vector<std::string>& presetChartKeys()
 {
-    static const std::vector<std::string> keys{"position", "velocity", "energy", "momentum", "activity", "difference"};
+    static const std::vector<std::string> keys{"position", "velocity",   "energy", "momentum",
+                                               "activity", "difference", "spin"};
     return keys;
 }
 

@@ -28,6 +28,8 @@ struct PresetView {
     // A second run of the same scene and start, computed another way, drawn beside the
     // first (ghosted in the 3D view, dashed on the charts); unset: no comparison.
     std::optional<RunVariant> compare;
+    // Playback speed, times real time (the window's [0.1, 10]); unset: the stage's own.
+    std::optional<double> speed;
 
     friend bool operator==(const PresetView&, const PresetView&) = default;
 };

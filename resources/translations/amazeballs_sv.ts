@@ -315,6 +315,85 @@
     </message>
 </context>
 <context>
+    <name>SpinEquations</name>
+    <message>
+        <source>Spin: balls that turn (physical model)</source>
+        <translation>Rotation: bollar som snurrar (fysikalisk modell)</translation>
+    </message>
+    <message>
+        <source>the ball spins about the vertical at %1 rad/%2 for the whole run: the floor cannot change that spin</source>
+        <translation>bollen snurrar kring den lodräta axeln med %1 rad/%2 under hela körningen: golvet kan inte ändra den rotationen</translation>
+    </message>
+    <message>
+        <source>the slip of the contact point along a wall of inward normal n; u = 0: the ball rolls</source>
+        <translation>kontaktpunktens glidning längs en vägg med inåtriktad normal n; u = 0: bollen rullar</translation>
+    </message>
+    <message>
+        <source>Spin</source>
+        <translation>Rotation</translation>
+    </message>
+    <message>
+        <source>The report&apos;s model has no rotation: its balls never turn, so friction (μ, β) and the start spin act in the physical model only. Choose the physical model to see them.</source>
+        <translation>Rapportens modell har ingen rotation: dess bollar snurrar aldrig, så friktionen (μ, β) och startrotationen verkar bara i den fysikaliska modellen. Välj den fysikaliska modellen för att se dem.</translation>
+    </message>
+    <message>
+        <source>per unit mass: %1 × (%2 %3)² = %4 %3²</source>
+        <translation>per massenhet: %1 × (%2 %3)² = %4 %3²</translation>
+    </message>
+    <message>
+        <source>q = %1, r = %2 %3: I1 = %4 kg %3², I2 = %5 kg %3²</source>
+        <translation>q = %1, r = %2 %3: I1 = %4 kg %3², I2 = %5 kg %3²</translation>
+    </message>
+    <message>
+        <source>%1 × %2 kg × (%3 %4)² = %5 kg %4²</source>
+        <translation>%1 × %2 kg × (%3 %4)² = %5 kg %4²</translation>
+    </message>
+    <message>
+        <source>sliding on the floor: μ g = %1 %2/%3² slows the centre and spins the ball up</source>
+        <translation>glidning på golvet: μ g = %1 %2/%3² bromsar centrum och sätter bollen i rotation</translation>
+    </message>
+    <message>
+        <source>the time a ball sliding at slip |u| takes to roll</source>
+        <translation>tiden det tar för en boll som glider med glidningen |u| att börja rulla</translation>
+    </message>
+    <message>
+        <source>the rolling state: the angular momentum about the contact point is kept; a ball without spin rolls on at 1/(1 + q) of its speed (5/7 for a solid ball)</source>
+        <translation>rullningstillståndet: rörelsemängdsmomentet kring kontaktpunkten bevaras; en boll utan rotation rullar vidare med 1/(1 + q) av sin fart (5/7 för en massiv boll)</translation>
+    </message>
+    <message>
+        <source>this start slides for t* = %1 %2</source>
+        <translation>denna start glider i t* = %1 %2</translation>
+    </message>
+    <message>
+        <source>then it rolls at %1 %2/%3 (%4 of its start speed of %5 %2/%3), r ω = v</source>
+        <translation>sedan rullar den med %1 %2/%3 (%4 av startfarten %5 %2/%3), r ω = v</translation>
+    </message>
+    <message>
+        <source>an impact that sticks: the slip u becomes −β u = %1 u (β = %2)</source>
+        <translation>en stöt som fastnar: glidningen u blir −β u = %1 u (β = %2)</translation>
+    </message>
+    <message>
+        <source>an impact that slides: at most μ = %1 times the normal impulse (Walton: the smaller of S9 and S10)</source>
+        <translation>en stöt som glider: högst μ = %1 gånger normalimpulsen (Walton: den mindre av S9 och S10)</translation>
+    </message>
+    <message>
+        <source>between two balls: their momentum is kept and both spins change in the same sense</source>
+        <translation>mellan två bollar: rörelsemängden bevaras och båda rotationerna ändras åt samma håll</translation>
+    </message>
+    <message>
+        <source>at a wall or the floor the angular momentum about the contact point is kept</source>
+        <translation>vid en vägg eller golvet bevaras rörelsemängdsmomentet kring kontaktpunkten</translation>
+    </message>
+    <message>
+        <source>%1 = 1 and β = 1: an impact that sticks loses no energy (a superball)</source>
+        <translation>%1 = 1 och β = 1: en stöt som fastnar förlorar ingen energi (en superboll)</translation>
+    </message>
+    <message>
+        <source>smooth contacts (μ = 0 or β = −1): no impulse along a wall, so every spin stays as it started</source>
+        <translation>glatta kontakter (μ = 0 eller β = −1): ingen impuls längs en vägg, så varje rotation förblir som den startade</translation>
+    </message>
+</context>
+<context>
     <name>Theme</name>
     <message>
         <source>Light</source>
@@ -538,6 +617,10 @@
     <message>
         <source>Difference</source>
         <translation>Skillnad</translation>
+    </message>
+    <message>
+        <source>Spin</source>
+        <translation>Rotation</translation>
     </message>
 </context>
 <context>
@@ -960,6 +1043,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>= %1 minus %2</source>
         <translation>= %1 minus %2</translation>
     </message>
+    <message>
+        <source>translation</source>
+        <translation>translationsenergi</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>rotationsenergi</translation>
+    </message>
+    <message>
+        <source>Spin of %1</source>
+        <translation>Rotation för %1</translation>
+    </message>
+    <message>
+        <source>ω (rad/%1)</source>
+        <translation>ω (rad/%1)</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ParameterPanel</name>
@@ -1077,6 +1176,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Difference between the runs (with a comparison or a closed form)</source>
         <translation>Skillnad mellan körningarna (med en jämförelse eller en sluten form)</translation>
+    </message>
+    <message>
+        <source>Spin (balls that turn, physical model)</source>
+        <translation>Rotation (bollar som snurrar, fysikalisk modell)</translation>
     </message>
 </context>
 <context>
@@ -2639,6 +2742,38 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>start spins: each component of every ball&apos;s w uniform in [-spin, spin], drawn from the seed (0: the balls start without spin)</source>
         <translation>startrotationer: varje komponent av varje bolls w likformigt fördelad i [-spin, spin], dragen ur fröet (0: bollarna startar utan rotation)</translation>
+    </message>
+    <message>
+        <source>A sliding ball starts to roll: the 5/7 rule</source>
+        <translation>En glidande boll börjar rulla: 5/7-regeln</translation>
+    </message>
+    <message>
+        <source>A ball set down on the floor at 5 m/s without spin, on a floor with little friction (mu = 0.02). Friction at its contact point slows the ball at mu g = 0.196 m/s^2 and spins it up, until the contact point stops slipping at t* = q v0 / ((1 + q) mu g) = 7.274 s (q = 2/5, a solid ball). From then on it rolls at 5/7 of its start speed, 3.571 m/s, with r w = v, and no friction acts on it any more: the pattern on the ball turns faster until it rolls, the spin chart levels off, and the energy chart shows rotation taking its share (and sliding losing some).</source>
+        <translation>En boll som sätts ned på golvet med 5 m/s utan rotation, på ett golv med lite friktion (mu = 0.02). Friktionen i kontaktpunkten bromsar bollen med mu g = 0.196 m/s^2 och sätter den i rotation, tills kontaktpunkten slutar glida vid t* = q v0 / ((1 + q) mu g) = 7.274 s (q = 2/5, en massiv boll). Därefter rullar den med 5/7 av startfarten, 3.571 m/s, med r w = v, och ingen friktion verkar längre på den: mönstret på bollen snurrar allt fortare tills den rullar, rotationsdiagrammet planar ut, och energidiagrammet visar rotationen ta sin andel (och glidningen förlora en del).</translation>
+    </message>
+    <message>
+        <source>Back-spin: a ball that bounces backwards</source>
+        <translation>Bakåtskruv: en boll som studsar bakåt</translation>
+    </message>
+    <message>
+        <source>A ball thrown forwards at 6 m/s from 100 m up, with back-spin: w = 6.8 rad/s about z, r w = 25.5 m/s against its motion. At the floor friction grips the contact point (mu = 0.5, beta = 0: the contact point stops), and the angular momentum about it, m r n x v + I w, is kept (S13): the ball leaves at v&apos; = (v - q r w) / (1 + q) = -3 m/s, backwards, rolling with r w = 3 m/s. Without the spin it would have bounced on forwards at 5/7 of 6 m/s.</source>
+        <translation>En boll som kastas framåt med 6 m/s från 100 m höjd, med bakåtskruv: w = 6.8 rad/s kring z, r w = 25.5 m/s mot rörelsen. Vid golvet griper friktionen kontaktpunkten (mu = 0.5, beta = 0: kontaktpunkten stannar), och rörelsemängdsmomentet kring den, m r n x v + I w, bevaras (S13): bollen lämnar golvet med v&apos; = (v - q r w) / (1 + q) = -3 m/s, bakåt, rullande med r w = 3 m/s. Utan skruven hade den studsat vidare framåt med 5/7 av 6 m/s.</translation>
+    </message>
+    <message>
+        <source>A superball under a table comes back out</source>
+        <translation>En superboll under ett bord kommer tillbaka ut</translation>
+    </message>
+    <message>
+        <source>Garwin&apos;s superball (1969): with k = 1 and beta = 1 an impact that sticks reverses the contact point&apos;s slip and loses no energy. Thrown under a table, the ball bounces off the floor, then off the underside of the table, and comes back out towards the thrower. The box has no table, so gravity is off and two of its walls stand in, seen from above: the wall z = 0 (at the bottom) is the floor and z = 60 (at the top) the table&apos;s underside. The ball comes in from the left at 10 m/s without spin; the floor sends it on at 3/7 of that, 4.29 m/s, spinning with r w = 2 u / (1 + q) = 14.3 m/s (S9), and the table sends it back out to the left at 6.33 m/s. The energy stays the same to round-off.</source>
+        <translation>Garwins superboll (1969): med k = 1 och beta = 1 vänder en stöt som fastnar kontaktpunktens glidning och förlorar ingen energi. Kastad in under ett bord studsar bollen mot golvet, sedan mot bordets undersida, och kommer tillbaka ut mot den som kastade. Lådan har inget bord, så tyngdkraften är avstängd och två av dess väggar får stå för dem, sedda ovanifrån: väggen z = 0 (nederst) är golvet och z = 60 (överst) bordets undersida. Bollen kommer in från vänster med 10 m/s utan rotation; golvet skickar den vidare med 3/7 av det, 4.29 m/s, roterande med r w = 2 u / (1 + q) = 14.3 m/s (S9), och bordet skickar den tillbaka ut åt vänster med 6.33 m/s. Energin förblir densamma så när som på avrundning.</translation>
+    </message>
+    <message>
+        <source>Two balls with friction: spin passed from one ball to the other</source>
+        <translation>Två bollar med friktion: rotation som förs över från den ena bollen till den andra</translation>
+    </message>
+    <message>
+        <source>Ball 1 spins about the vertical at 4 rad/s and runs at 5 m/s into ball 2, which rests without spin; gravity is off, so nothing else touches them until the walls. At the contact friction grips (mu = 0.5, beta = 0): one tangential impulse acts on the two balls at their one contact point, in opposite directions, so their momentum is kept (they move apart sideways at 1.14 m/s each) and both spins change by the same amount in the same sense (S11-S12): ball 1 keeps 2.57 rad/s and ball 2 starts to spin at -1.43 rad/s, like a gear driven by the first. Choose ball 2 in the charts to follow its spin.</source>
+        <translation>Boll 1 snurrar kring den lodräta axeln med 4 rad/s och rullar med 5 m/s in i boll 2, som ligger stilla utan rotation; tyngdkraften är avstängd, så inget annat rör dem förrän väggarna. Vid kontakten griper friktionen (mu = 0.5, beta = 0): en enda tangentiell impuls verkar på de två bollarna i deras gemensamma kontaktpunkt, i motsatta riktningar, så rörelsemängden bevaras (de glider isär i sidled med 1.14 m/s var) och båda rotationerna ändras lika mycket åt samma håll (S11-S12): boll 1 behåller 2.57 rad/s och boll 2 börjar snurra med -1.43 rad/s, som ett kugghjul som drivs av det första. Välj boll 2 i diagrammen för att följa dess rotation.</translation>
     </message>
 </context>
 <context>

@@ -204,7 +204,8 @@ private slots:
                      expected);
         }
         QCOMPARE(complete(cli, "_amazeballs_cli", {"amazeballs-cli", "chart", "box3d", "--preset", "box"}),
-                 (QStringList{"box3d-report", "box3d-tunnelling"}));
+                 (QStringList{"box3d-report", "box3d-backspin-bounce", "box3d-sliding-to-rolling",
+                              "box3d-superball-table", "box3d-tunnelling"}));
         const std::string window = kDocs + "/bash/amazeballs";
         QCOMPARE(complete(window, "_amazeballs", {"amazeballs", "--the"}), QStringList{"--theme"});
         QCOMPARE(complete(window, "_amazeballs", {"amazeballs", "--scene", "two"}), QStringList{"two-balls"});

@@ -128,7 +128,8 @@ private slots:
             << "integrator";
         QTest::newRow("negative step") << head + R"("scene": "bounce1d", "model": "report", "dt": -1})"
                                        << "dt";
-        QTest::newRow("unknown chart") << head + R"("scene": "box3d", "model": "report", "view": {"charts": ["spin"]}})"
+        QTest::newRow("unknown chart") << head +
+                                              R"("scene": "box3d", "model": "report", "view": {"charts": ["torque"]}})"
                                        << "view.charts[0]";
         QTest::newRow("ball out of range")
             << head + R"("scene": "two-balls", "model": "report", "view": {"selected_ball": 2}})"

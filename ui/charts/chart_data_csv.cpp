@@ -9,7 +9,7 @@ namespace ab::ui {
 namespace {
 
 struct Units {
-    std::string t, length, speed, energy, momentum;
+    std::string t, length, speed, energy, momentum, spin;
 };
 
 Units unitsOf(const ChartData& d)
@@ -17,7 +17,8 @@ Units unitsOf(const ChartData& d)
     // Energy is m |v|^2: mass length^2 / time^2; momentum m v: mass length / time.
     const std::string mass = d.perUnitMass ? "" : "kg ";
     const std::string speed = d.lengthUnit + "/" + d.timeUnit;
-    return Units{d.timeUnit, d.lengthUnit, speed, mass + d.lengthUnit + "^2/" + d.timeUnit + "^2", mass + speed};
+    return Units{d.timeUnit,   d.lengthUnit,       speed, mass + d.lengthUnit + "^2/" + d.timeUnit + "^2",
+                 mass + speed, "rad/" + d.timeUnit};
 }
 
 class Writer {
@@ -57,6 +58,12 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
         for (const char* c : {"momentum_x", "momentum_y", "momentum_z"})
             out << "," << prefix << c << " [" << u.momentum << "]";
         out << "," << prefix << "moving [balls]," << prefix << "impacts [1]";
+        if (!d.spins)
+            return;
+        for (int a = 0; a < 3; ++a)
+            out << "," << prefix << "w" << names[a] << " [" << u.spin << "]";
+        for (const char* c : {"energy_translation", "energy_rotation"})
+            out << "," << prefix << c << " [" << u.energy << "]";
     };
     out << "t [" << u.t << "],ball";
     header("");
@@ -85,10 +92,16 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
             w.put(m.momentum(a)[i]);
         w.put(static_cast<long long>(m.moving()[i]));
         w.put(m.impacts()[i]);
+        if (!d.spins)
+            return;
+        for (int a = 0; a < 3; ++a)
+            w.put(m.w(a)[i]);
+        w.put(m.translation()[i]);
+        w.put(m.rotation()[i]);
     };
     const MotionTrack& run = *d.run;
     const MotionTrack* compare = d.comparison;
-    const std::size_t compareColumns = 1 + 2 * shown.size() + 9;
+    const std::size_t compareColumns = 1 + 2 * shown.size() + 9 + (d.spins ? 5 : 0);
     std::size_t j = 0; // the comparison's last sample at or before the row's time
     for (std::size_t i = 0; i < run.size(); ++i) {
         const double t = run.t()[i];

@@ -6,7 +6,9 @@
 //   t [T], ball (1-based, as the window numbers the balls), the position and velocity of
 //   the axes shown (1: y alone; 3: x, y, z), energy_total, energy_kinetic,
 //   energy_potential, energy_spring (of all balls, per unit mass or with the physical
-//   model's masses), momentum_x, _y, _z, moving (balls), impacts (since the start);
+//   model's masses), momentum_x, _y, _z, moving (balls), impacts (since the start), and
+//   where the balls turn wx, wy, wz (the ball's angular velocity, rad/T) and
+//   energy_translation, energy_rotation (the kinetic energy's parts);
 //   with a closed form: x_closed_form ... vz_closed_form at the row's time (empty where it
 //   does not apply); with a comparison run: compare_t and the same columns prefixed
 //   `compare_`, from the comparison's last sample at or before the row's time (the same
@@ -30,6 +32,7 @@ struct ChartData {
     const ReferenceMotion* closedForm = nullptr;
     std::string timeUnit = "s", lengthUnit = "m";
     bool perUnitMass = true;
+    bool spins = false;                // the balls turn: wx, wy, wz, energy_translation, energy_rotation after the rest
     std::vector<std::string> comments; // without the "# "
 };
 

@@ -11,9 +11,11 @@ namespace {
 
 // x, y, z in the colours of the 3D view's axis triad.
 const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
-// Kinetic, potential, total, spring; and the activity chart's two lines.
-const QColor energyColours[4] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
-                                 QColor(0x8c, 0x56, 0x4b)};
+// Kinetic (of translation where the balls turn), potential, total, spring, rotation (a
+// deeper red beside translation's orange: the two parts of the kinetic energy); and the
+// activity chart's two lines.
+const QColor energyColours[5] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
+                                 QColor(0x8c, 0x56, 0x4b), QColor(0xc0, 0x39, 0x2b)};
 const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
 // The comparison's family: each colour mixed half and half with a dark violet, so that
 // its lines are darker and of another hue than the run's they lie on.
@@ -29,7 +31,7 @@ QColor baseColour(ChartKind kind, int line)
 {
     switch (kind) {
     case ChartKind::Energy:
-        return energyColours[std::clamp(line, 0, 3)];
+        return energyColours[std::clamp(line, 0, 4)];
     case ChartKind::Activity:
         return activityColours[std::clamp(line, 0, 1)];
     default:

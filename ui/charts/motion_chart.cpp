@@ -22,7 +22,8 @@ namespace {
 
 constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
     {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"},
-    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"}};
+    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"},
+    {ChartKind::Spin, "spin"}};
 
 // [lo, hi] widened to whole ticks, which fall on multiples of the step (zero among them).
 // Fixed ticks: Qt places them at min + i (max - min) / (n - 1), exact at the ends, where its
@@ -48,9 +49,29 @@ QString squared(const QString& unit)
 
 const std::vector<ChartKind>& allChartKinds()
 {
-    static const std::vector<ChartKind> kinds = {ChartKind::Position, ChartKind::Velocity, ChartKind::Energy,
-                                                 ChartKind::Momentum, ChartKind::Activity, ChartKind::Difference};
+    // In the order the chart panel shows them: the ball's own motion (spin beside its
+    // velocity), then what the whole scene conserves.
+    static const std::vector<ChartKind> kinds = {ChartKind::Position,  ChartKind::Velocity, ChartKind::Spin,
+                                                 ChartKind::Energy,    ChartKind::Momentum, ChartKind::Activity,
+                                                 ChartKind::Difference};
     return kinds;
+}
+
+ChartUnits chartUnitsOf(const ConservationMeter& meter)
+{
+    return ChartUnits{meter.perUnitMass(), meter.hasSpring(), meter.turns()};
+}
+
+bool chartApplies(ChartKind kind, SceneId scene, const ChartUnits& units)
+{
+    return chartApplies(kind, scene) && (kind != ChartKind::Spin || units.spins);
+}
+
+bool chartApplies(ChartKind kind, const RunSpec& spec)
+{
+    ChartUnits units;
+    units.spins = ballsTurn(spec);
+    return chartApplies(kind, spec.scene, units);
 }
 
 bool chartApplies(ChartKind kind, SceneId scene)
@@ -100,7 +121,7 @@ MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
         s->attachAxis(valueAxis_);
         return s;
     };
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < maxLines; ++a) {
         lines_[a] = add(new QLineSeries);
         overlays_[a] = add(new QLineSeries);
         if (a < 3)
@@ -133,7 +154,7 @@ MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
 
 void MotionChart::applyPens()
 {
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < maxLines; ++a) {
         lines_[a]->setPen(linePen(kind_, a, a, LineFamily::Run, look_));
         overlays_[a]->setPen(linePen(kind_, a, a, LineFamily::Comparison, look_));
         overlays_[a]->setProperty(comparisonOfProperty, lineColour(kind_, a, LineFamily::Run));
@@ -147,7 +168,7 @@ void MotionChart::restyleRunLines()
     // The run's first shown line is solid, the next ones dash-dot and dash-dot-dot: only
     // the style changes, the colour and width stay as the theme or lecture mode set them
     // (and the pen ui/theme/appearance.cpp scales from, kept as "ab_basePen", follows).
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < maxLines; ++a) {
         const auto at = std::find(shownAxes_.begin(), shownAxes_.end(), a);
         const int order = at == shownAxes_.end() ? 0 : int(at - shownAxes_.begin());
         const Qt::PenStyle style = linePen(kind_, a, order, LineFamily::Run, look_).style();
@@ -183,17 +204,28 @@ void MotionChart::applyFonts()
 
 void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& units)
 {
-    static const char* axisNames[4][3] = {
-        {"x", "y", "z"}, {"vx", "vy", "vz"}, {"px", "py", "pz"}, {"\u0394x", "\u0394y", "\u0394z"}};
+    static const char* axisNames[5][3] = {{"x", "y", "z"},
+                                          {"vx", "vy", "vz"},
+                                          {"px", "py", "pz"},
+                                          {"\u0394x", "\u0394y", "\u0394z"},
+                                          {"\u03c9x", "\u03c9y", "\u03c9z"}};
     const std::vector<int> axes = scene.axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
+    spins_ = units.spins;
     switch (kind_) {
     case ChartKind::Position:
     case ChartKind::Velocity:
     case ChartKind::Difference:
+    case ChartKind::Spin:
         shownAxes_ = axes;
         break;
     case ChartKind::Energy:
-        shownAxes_ = units.spring ? std::vector<int>{0, 1, 3, 2} : std::vector<int>{0, 1, 2};
+        shownAxes_ = {0};
+        if (units.spins)
+            shownAxes_.push_back(4);
+        shownAxes_.push_back(1);
+        if (units.spring)
+            shownAxes_.push_back(3);
+        shownAxes_.push_back(2);
         break;
     case ChartKind::Momentum:
         shownAxes_ = {0, 1, 2};
@@ -209,7 +241,7 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     // Energy is m |v|^2: mass length^2 / time^2; momentum m v: mass length / time.
     const QString energyUnit = squared(length) + "/" + squared(time);
     const QString momentumUnit = length + "/" + time;
-    QString names[4];
+    QString names[maxLines];
     switch (kind_) {
     case ChartKind::Position:
         setTitle(tr("Position of %1").arg(who));
@@ -223,10 +255,11 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         setTitle(units.perUnitMass ? tr("Energy per unit mass, all balls (%1)").arg(energyUnit)
                                    : tr("Energy, all balls (kg %1)").arg(energyUnit));
         valueAxis_->setTitleText(units.perUnitMass ? tr("E/m") : tr("E"));
-        names[0] = tr("kinetic");
+        names[0] = units.spins ? tr("translation") : tr("kinetic");
         names[1] = tr("potential");
         names[2] = tr("total");
         names[3] = tr("spring");
+        names[4] = tr("rotation");
         break;
     case ChartKind::Momentum:
         setTitle(units.perUnitMass ? tr("Total momentum per unit mass, all balls (%1)").arg(momentumUnit)
@@ -244,15 +277,20 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         setTitle(tr("Difference in position of %1").arg(who));
         valueAxis_->setTitleText(tr("difference (%1)").arg(length));
         break;
+    case ChartKind::Spin:
+        setTitle(tr("Spin of %1").arg(who));
+        valueAxis_->setTitleText(tr("\u03c9 (rad/%1)").arg(time));
+        break;
     }
     timeAxis_->setTitleText(tr("t (%1)").arg(time));
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < maxLines; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->clear();
         if (a < 3 && names[a].isEmpty())
             names[a] = QString::fromUtf8(axisNames[kind_ == ChartKind::Velocity     ? 1
                                                    : kind_ == ChartKind::Momentum   ? 2
                                                    : kind_ == ChartKind::Difference ? 3
+                                                   : kind_ == ChartKind::Spin       ? 4
                                                                                     : 0][a]);
         baseNames_[a] = names[a];
         lines_[a]->setVisible(shown);
@@ -300,9 +338,14 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
     case ChartKind::Velocity:
         return track.v(line);
     case ChartKind::Energy: {
-        const std::vector<double>* parts[4] = {&track.kinetic(), &track.potential(), &track.energy(), &track.spring()};
+        // Where the balls turn, line 0 is the kinetic energy of translation and line 4 of rotation.
+        const std::vector<double>* parts[maxLines] = {spins_ ? &track.translation() : &track.kinetic(),
+                                                      &track.potential(), &track.energy(), &track.spring(),
+                                                      &track.rotation()};
         return *parts[line];
     }
+    case ChartKind::Spin:
+        return track.w(line);
     case ChartKind::Momentum:
         return track.momentum(line);
     case ChartKind::Difference:
@@ -322,7 +365,7 @@ void MotionChart::applyNames()
 {
     // The difference chart overlays nothing: its lines are the run minus the other one.
     const bool comparing = !compareName_.isEmpty() && kind_ != ChartKind::Difference;
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < maxLines; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->setName(comparing ? baseNames_[a] + " (" + mainName_ + ")" : baseNames_[a]);
         overlays_[a]->setName(baseNames_[a] + " (" + compareName_ + ")");
@@ -366,7 +409,7 @@ void MotionChart::showTrack(const MotionTrack& track, int columns)
     drawTrack(track, columns, lines_);
 }
 
-void MotionChart::drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, 4>& series)
+void MotionChart::drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, maxLines>& series)
 {
     if (!track.empty() && std::isfinite(track.t().back()) && track.t().back() > tEnd_)
         setTimeSpan(track.t().back());

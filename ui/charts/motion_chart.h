@@ -33,16 +33,17 @@ class QValueAxis;
 
 namespace ab::ui {
 
-enum class ChartKind { Position, Velocity, Energy, Momentum, Activity, Difference };
+enum class ChartKind { Position, Velocity, Energy, Momentum, Activity, Difference, Spin };
 
 const std::vector<ChartKind>& allChartKinds();
-// "position", "velocity", "energy", "momentum", "activity", "difference"
+// "position", "velocity", "energy", "momentum", "activity", "difference", "spin"
 std::string_view chartKey(ChartKind kind);
 std::optional<ChartKind> parseChartKind(std::string_view key);
 // Whether the chart means something for the scene: momentum needs two balls or more
 // (one ball's momentum only shows gravity and the walls), activity needs many. The
 // difference chart applies to every scene but is drawn only beside a comparison run or
-// a closed form (differenceDrawable).
+// a closed form (differenceDrawable). The spin chart needs balls that turn: ask
+// chartApplies with the run's ChartUnits.
 bool chartApplies(ChartKind kind, SceneId scene);
 bool differenceDrawable(bool comparing, bool closedForm);
 
@@ -50,7 +51,16 @@ bool differenceDrawable(bool comparing, bool closedForm);
 struct ChartUnits {
     bool perUnitMass = true; // the report model's equal masses; false: the physical model's kg
     bool spring = false;     // the spring floor: its energy gets a line of its own
+    bool spins = false;      // the balls turn: kinetic energy splits into translation and rotation, and
+                             // the spin chart applies
 };
+
+// What `meter` measures the run's charts with.
+ChartUnits chartUnitsOf(const ConservationMeter& meter);
+// chartApplies for the run the units are of: the spin chart only where the balls turn.
+bool chartApplies(ChartKind kind, SceneId scene, const ChartUnits& units);
+// chartApplies for the run `spec` describes (its balls turn: ballsTurn).
+bool chartApplies(ChartKind kind, const RunSpec& spec);
 
 // A closed-form motion (from core/reference/ where the core has one): the ball's
 // position and velocity at time t, or nothing where the closed form does not apply.
@@ -65,6 +75,7 @@ struct ReferenceMotion {
 class MotionChart : public QChart {
     Q_OBJECT
 public:
+    static constexpr int maxLines = 5; // the energy chart's parts, where the balls turn
     explicit MotionChart(ChartKind kind, const ChartLook& look = ChartLook::window());
 
     ChartKind kind() const { return kind_; }
@@ -95,9 +106,10 @@ public:
     ChartLegend* legendItem() const { return legend_; }
 
     // The lines drawn. Position, velocity: the axes, {1} for a vertical-only scene, {0,
-    // 1, 2} otherwise; momentum {0, 1, 2} (x, y, z). Energy: 0 kinetic, 1 potential,
-    // 2 total, 3 spring (when the spring floor is on). Activity: 0 moving balls (left
-    // axis), 1 impacts per unit of time (right axis). Difference: the position axes.
+    // 1, 2} otherwise; momentum and spin {0, 1, 2} (x, y, z; spin {1} for a vertical-only
+    // scene). Energy: 0 kinetic (of translation where the balls turn), 1 potential,
+    // 2 total, 3 spring (when the spring floor is on), 4 rotation (where the balls turn). Activity: 0 moving balls
+    // (left axis), 1 impacts per unit of time (right axis). Difference: the position axes.
     const std::vector<int>& shownAxes() const { return shownAxes_; }
     QValueAxis* valueAxis() const { return valueAxis_; }
     QValueAxis* rateAxis() const { return rateAxis_; } // activity only, else nullptr
@@ -128,7 +140,7 @@ private:
     void placeCursor();
     void applyNames();
     // The lines of `track` into `series`, widening the axes to hold them.
-    void drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, 4>& series);
+    void drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, maxLines>& series);
     void sampleReference();
     const std::vector<double>& column(const MotionTrack& track, int line);
     double component(const Kinematics& k, int axis) const;
@@ -139,13 +151,14 @@ private:
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
     QValueAxis* rateAxis_ = nullptr;
-    std::array<QLineSeries*, 4> lines_{};
+    std::array<QLineSeries*, maxLines> lines_{};
     std::array<QLineSeries*, 3> references_{};
-    std::array<QLineSeries*, 4> overlays_{};
-    std::array<QString, 4> baseNames_;
+    std::array<QLineSeries*, maxLines> overlays_{};
+    std::array<QString, maxLines> baseNames_;
     QString mainName_, compareName_, who_;
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
+    bool spins_ = false; // the energy chart splits kinetic energy (ChartUnits::spins)
     double tEnd_ = 1.0;
     std::optional<double> cursorT_;
     std::optional<ReferenceMotion> reference_;

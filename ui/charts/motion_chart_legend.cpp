@@ -31,7 +31,7 @@ void MotionChart::followLegendStyle()
         legend_->setTextColour(c);
         updateLegend();
     });
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0; a < maxLines; ++a)
         for (QLineSeries* s : {lines_[a], overlays_[a], a < 3 ? references_[a] : nullptr})
             if (s)
                 connect(s, &QXYSeries::penChanged, this, [this] { updateLegend(); });

@@ -15,9 +15,12 @@ template <typename F> void MotionTrack::forEachColumn(F&& f)
     for (int a = 0; a < 3; ++a) {
         f(p_[a]);
         f(v_[a]);
+        f(w_[a]);
         f(momentum_[a]);
     }
     f(kinetic_);
+    f(translation_);
+    f(rotation_);
     f(potential_);
     f(spring_);
     f(energy_);
@@ -34,6 +37,12 @@ void MotionTrack::clear()
 void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
                       const ConservationSample& scene)
 {
+    add(step, t, p, v, Eigen::Vector3d::Zero(), scene);
+}
+
+void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+                      const Eigen::Vector3d& w, const ConservationSample& scene)
+{
     if (!step_.empty() && step <= step_.back())
         throw std::logic_error("motion samples out of order");
     if (step % stride_ != 0)
@@ -43,9 +52,12 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
     for (int a = 0; a < 3; ++a) {
         p_[a].push_back(p[a]);
         v_[a].push_back(v[a]);
+        w_[a].push_back(w[a]);
         momentum_[a].push_back(scene.momentum[a]);
     }
     kinetic_.push_back(scene.energy.kinetic);
+    translation_.push_back(scene.energy.translation());
+    rotation_.push_back(scene.energy.rotation);
     potential_.push_back(scene.energy.potential);
     spring_.push_back(scene.energy.spring);
     energy_.push_back(scene.energy.total());

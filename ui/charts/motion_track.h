@@ -24,6 +24,9 @@ public:
     // current stride. Steps must come in increasing order.
     void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
              const ConservationSample& scene);
+    // The same, with the ball's angular velocity `w` (a ball that turns).
+    void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& w,
+             const ConservationSample& scene);
 
     // Drops every sample of step `step` and later (a run forked back to that step).
     void truncateFrom(long long step);
@@ -37,8 +40,12 @@ public:
     const std::vector<double>& t() const { return t_; }
     const std::vector<double>& p(int axis) const { return p_[static_cast<std::size_t>(axis)]; }
     const std::vector<double>& v(int axis) const { return v_[static_cast<std::size_t>(axis)]; }
-    // Of all balls: kinetic, potential, spring and total energy; momentum per axis.
+    const std::vector<double>& w(int axis) const { return w_[static_cast<std::size_t>(axis)]; }
+    // Of all balls: kinetic (translation and rotation), potential, spring and total
+    // energy, the kinetic energy's parts of translation and rotation; momentum per axis.
     const std::vector<double>& kinetic() const { return kinetic_; }
+    const std::vector<double>& translation() const { return translation_; }
+    const std::vector<double>& rotation() const { return rotation_; }
     const std::vector<double>& potential() const { return potential_; }
     const std::vector<double>& spring() const { return spring_; }
     const std::vector<double>& energy() const { return energy_; }
@@ -54,8 +61,8 @@ private:
     long long stride_ = 1;
     std::vector<long long> step_;
     std::vector<double> t_;
-    std::array<std::vector<double>, 3> p_, v_, momentum_;
-    std::vector<double> kinetic_, potential_, spring_, energy_, moving_;
+    std::array<std::vector<double>, 3> p_, v_, w_, momentum_;
+    std::vector<double> kinetic_, translation_, rotation_, potential_, spring_, energy_, moving_;
     std::vector<long long> impacts_;
 };
 

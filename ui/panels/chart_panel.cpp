@@ -97,7 +97,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     applies_.fill(true);
     wanted_.fill(true);
     available_.fill(true);
-    splitter->setSizes({300, 300, 260, 220, 220, 220});
+    splitter->setSizes({300, 300, 260, 220, 220, 220, 220});
     // Up to five charts: when the window is too short for all of them at a readable
     // height they scroll, rather than shrink until their labels are cut.
     auto* scroll = new QScrollArea;
@@ -126,7 +126,7 @@ void ChartPanel::configure(const SceneInfo& scene, int balls, int ball, double t
         const std::size_t i = slot(kind);
         if (available_[i])
             wanted_[i] = !views_[i]->isHidden(); // the wish, as the View menu or a preset left it
-        applies_[i] = chartApplies(kind, scene.id);
+        applies_[i] = chartApplies(kind, scene.id, units);
         charts_[i]->configure(scene, ball, units);
         charts_[i]->setTimeSpan(tEnd);
     }
@@ -305,6 +305,8 @@ QString ChartPanel::chartName(ChartKind kind)
         return tr("Activity");
     case ChartKind::Difference:
         return tr("Difference");
+    case ChartKind::Spin:
+        return tr("Spin");
     }
     return {};
 }

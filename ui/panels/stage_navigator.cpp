@@ -200,6 +200,14 @@ void StageNavigator::setPreset(SceneId scene, const QString& name, const QString
     showText();
 }
 
+void StageNavigator::setRunSection(const QString& html)
+{
+    if (html == runSection_)
+        return;
+    runSection_ = html;
+    showText();
+}
+
 void StageNavigator::showText()
 {
     const SceneInfo& info = sceneInfo(current_);
@@ -207,7 +215,9 @@ void StageNavigator::showText()
     if (!presetName_.isEmpty() && presetScene_ == current_)
         preset = QStringLiteral("<h3 style='margin-bottom:2px'>%1</h3><p style='margin-top:0'>%2</p><hr>")
                      .arg(tr("Preset: %1").arg(presetName_.toHtmlEscaped()), presetDescription_.toHtmlEscaped());
-    text_->setHtml(preset + describe(info, walking_ ? revealed_ : -1));
+    // In the walk the run's section comes once the stage's own equations are all shown.
+    const bool all = !walking_ || revealed_ >= equationCount();
+    text_->setHtml(preset + describe(info, walking_ ? revealed_ : -1) + (all ? runSection_ : QString()));
     progress_->setVisible(walking_);
     if (!walking_)
         return;

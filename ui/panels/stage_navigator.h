@@ -40,6 +40,9 @@ public:
     void setPreset(SceneId scene, const QString& name, const QString& description);
     QString presetName() const { return presetName_; }
     QString presetDescription() const { return presetDescription_; }
+    // HTML shown after the stage's equations, of the run rather than the stage (the
+    // rotation of a physical run, SpinEquations); empty: none.
+    void setRunSection(const QString& html);
 
     void setWalking(bool on);
     bool walking() const { return walking_; }
@@ -74,6 +77,7 @@ private:
     int revealed_ = 0;
     SceneId presetScene_ = SceneId::Bounce1d;
     QString presetName_, presetDescription_;
+    QString runSection_;
 };
 
 } // namespace ab::ui

@@ -87,6 +87,8 @@ QString chartName(ChartKind kind)
         return PresetActions::tr("Moving balls and impacts (many balls)");
     case ChartKind::Difference:
         return PresetActions::tr("Difference between the runs (with a comparison or a closed form)");
+    case ChartKind::Spin:
+        return PresetActions::tr("Spin (balls that turn, physical model)");
     }
     return QString::fromLatin1(chartKey(kind).data()); // a chart added later, by its key
 }
@@ -150,7 +152,7 @@ void applyPresetToWindow(MainWindow& window, const Preset& preset)
                              spec.dt,
                              preset.steps.value_or(defaultSteps(spec.scene, spec.model)),
                              preset.view.compare};
-    if (const auto error = window.showSetup(spec, options))
+    if (const auto error = window.showSetup(spec, options, preset.view.speed))
         throw InputError(presetName(preset) + ": " + error->toStdString());
     showCharts(*window.charts(), charts);
     // What the preset is about, in the navigator beside the stage it opens.

@@ -50,7 +50,7 @@ void Recording::add(long long step, const State& s)
 {
     const Eigen::Index b = trackedBall_;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
-    track_.add(step, s.t, s.p.col(b), s.v.col(b), scene);
+    track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene);
     if (step % frameStride_ != 0)
         return;
     frames_.push_back(makeFrame(step, s, scene));
@@ -85,7 +85,7 @@ void Recording::setTrackedBall(int ball)
         const auto i = static_cast<std::size_t>(3 * ball);
         const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);
         const Eigen::Vector3d v(f.v[i], f.v[i + 1], f.v[i + 2]);
-        track_.add(f.step, f.t, p, v, f.scene);
+        track_.add(f.step, f.t, p, v, f.spin(ball), f.scene);
     }
 }
 

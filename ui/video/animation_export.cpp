@@ -42,10 +42,10 @@ QRect viewRectOf(const AnimationRequest& r)
 std::vector<ChartKind> chartKindsOf(const AnimationRequest& r)
 {
     if (r.chartKinds.empty())
-        return chartsFor(r.spec.scene);
+        return chartsFor(r.spec);
     std::vector<ChartKind> kinds;
     for (ChartKind k : r.chartKinds)
-        if (chartApplies(k, r.spec.scene))
+        if (chartApplies(k, r.spec))
             kinds.push_back(k);
     return kinds;
 }

@@ -13,11 +13,11 @@
 
 namespace ab::ui {
 
-std::vector<ChartKind> chartsFor(SceneId scene)
+std::vector<ChartKind> chartsFor(const RunSpec& spec)
 {
     std::vector<ChartKind> kinds;
     for (ChartKind k : allChartKinds())
-        if (chartApplies(k, scene))
+        if (chartApplies(k, spec))
             kinds.push_back(k);
     return kinds;
 }
@@ -36,7 +36,7 @@ ChartStrip::ChartStrip(const Simulation& sim, int ball, const std::vector<ChartK
     std::vector<int> need;
     for (ChartKind kind : kinds) {
         MotionChart probe(kind);
-        probe.configure(sim.scene(), ball, ChartUnits{meter.perUnitMass(), meter.hasSpring()});
+        probe.configure(sim.scene(), ball, chartUnitsOf(meter));
         need.push_back(std::max(kMinHeight, readableHeight(probe, size.width())));
     }
     std::size_t n = 1;
@@ -59,7 +59,7 @@ ChartStrip::Panel ChartStrip::drawPanel(const Simulation& sim, int ball, ChartKi
     const double scale = std::min(1.0, double(rect.height()) / need); // pixels per chart unit
     const QSizeF logical(rect.width() / scale, rect.height() / scale);
     MotionChart chart(kind);
-    chart.configure(sim.scene(), ball, ChartUnits{meter.perUnitMass(), meter.hasSpring()});
+    chart.configure(sim.scene(), ball, chartUnitsOf(meter));
     chart.setTimeSpan(tEnd);
     // Laid out at its size before the lines go in (the time ticks follow the plot's width).
     QGraphicsScene scene;

@@ -21,7 +21,7 @@ class QPainter;
 namespace ab::ui {
 
 // The charts the window shows for the scene (every one that applies), in its order.
-std::vector<ChartKind> chartsFor(SceneId scene);
+std::vector<ChartKind> chartsFor(const RunSpec& spec);
 
 class ChartStrip {
 public:
