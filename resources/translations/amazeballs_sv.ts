@@ -392,6 +392,10 @@
         <source>smooth contacts (μ = 0 or β = −1): no impulse along a wall, so every spin stays as it started</source>
         <translation>glatta kontakter (μ = 0 eller β = −1): ingen impuls längs en vägg, så varje rotation förblir som den startade</translation>
     </message>
+    <message>
+        <source>an impact that sticks: the contact point stops (β = 0)</source>
+        <translation>en stöt som fastnar: kontaktpunkten stannar (β = 0)</translation>
+    </message>
 </context>
 <context>
     <name>Theme</name>

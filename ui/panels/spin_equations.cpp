@@ -156,9 +156,11 @@ QString SpinEquations::impactRows(const RunSpec& spec)
 {
     const ParamValues& v = spec.params;
     const double beta = v.real("beta"), mu = v.real("mu");
-    QString out = row(
-        QStringLiteral("S9"), QStringLiteral("P_t = \u2212(1 + \u03b2) m* u,  m* = q m/(1 + q)"),
-        tr("an impact that sticks: the slip u becomes \u2212\u03b2 u = %1 u (\u03b2 = %2)").arg(num(-beta), num(beta)));
+    const QString sticks = beta == 0.0
+                               ? tr("an impact that sticks: the contact point stops (\u03b2 = 0)")
+                               : tr("an impact that sticks: the slip u becomes \u2212\u03b2 u = %1 u (\u03b2 = %2)")
+                                     .arg(num(-beta), num(beta));
+    QString out = row(QStringLiteral("S9"), QStringLiteral("P_t = \u2212(1 + \u03b2) m* u,  m* = q m/(1 + q)"), sticks);
     out += row(QStringLiteral("S10"), QStringLiteral("|P_t| = \u03bc P_n"),
                tr("an impact that slides: at most \u03bc = %1 times the normal impulse (Walton: the smaller of "
                   "S9 and S10)")
