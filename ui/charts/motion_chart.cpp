@@ -20,11 +20,6 @@ namespace ab::ui {
 
 namespace {
 
-constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
-    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"},
-    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"},
-    {ChartKind::Spin, "spin"}};
-
 // [lo, hi] widened to whole ticks, which fall on multiples of the step (zero among them).
 // Fixed ticks: Qt places them at min + i (max - min) / (n - 1), exact at the ends, where its
 // dynamic ticks add the step up from the bottom and label a zero at the top of a range
@@ -46,66 +41,6 @@ QString squared(const QString& unit)
 }
 
 } // namespace
-
-const std::vector<ChartKind>& allChartKinds()
-{
-    // In the order the chart panel shows them: the ball's own motion (spin beside its
-    // velocity), then what the whole scene conserves.
-    static const std::vector<ChartKind> kinds = {ChartKind::Position,  ChartKind::Velocity, ChartKind::Spin,
-                                                 ChartKind::Energy,    ChartKind::Momentum, ChartKind::Activity,
-                                                 ChartKind::Difference};
-    return kinds;
-}
-
-ChartUnits chartUnitsOf(const ConservationMeter& meter)
-{
-    return ChartUnits{meter.perUnitMass(), meter.hasSpring(), meter.turns()};
-}
-
-bool chartApplies(ChartKind kind, SceneId scene, const ChartUnits& units)
-{
-    return chartApplies(kind, scene) && (kind != ChartKind::Spin || units.spins);
-}
-
-bool chartApplies(ChartKind kind, const RunSpec& spec)
-{
-    ChartUnits units;
-    units.spins = ballsTurn(spec);
-    return chartApplies(kind, spec.scene, units);
-}
-
-bool chartApplies(ChartKind kind, SceneId scene)
-{
-    switch (kind) {
-    case ChartKind::Momentum:
-        return scene == SceneId::TwoBalls || scene == SceneId::ManyBalls;
-    case ChartKind::Activity:
-        return scene == SceneId::ManyBalls;
-    default:
-        return true;
-    }
-}
-
-bool differenceDrawable(bool comparing, bool closedForm)
-{
-    return comparing || closedForm;
-}
-
-std::string_view chartKey(ChartKind kind)
-{
-    for (const auto& [k, key] : chartKeys)
-        if (k == kind)
-            return key;
-    throw std::logic_error("chart kind without a key");
-}
-
-std::optional<ChartKind> parseChartKind(std::string_view key)
-{
-    for (const auto& [k, name] : chartKeys)
-        if (name == key)
-            return k;
-    return std::nullopt;
-}
 
 MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
     : kind_(kind), look_(look), legend_(new ChartLegend(this)), timeAxis_(new QValueAxis), valueAxis_(new QValueAxis),
