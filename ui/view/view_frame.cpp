@@ -95,9 +95,16 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
     p.setRenderHint(QPainter::Antialiasing);
     p.setFont(font);
     QPointF at;
-    for (const SceneLabel& label : geometry.labels)
-        if (camera.project(label.at, size, at))
-            drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
+    const QFontMetricsF fm(font);
+    for (const SceneLabel& label : geometry.labels) {
+        if (!camera.project(label.at, size, at) || at.x() < 0.0 || at.x() > size.width())
+            continue;
+        // A label whose point is in view is read whole: moved in from the edge it would cross.
+        const double half = fm.horizontalAdvance(label.text) / 2.0 + 3.0;
+        at.setX(
+            std::clamp(at.x(), std::min(half, size.width() / 2.0), std::max(size.width() - half, size.width() / 2.0)));
+        drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
+    }
     // The vertical scene reads its height off the scale: label the ball with it.
     if (!layout.walls && balls.size() >= 3 && camera.project(QVector3D(balls[0], balls[1], balls[2]), size, at))
         drawHaloText(p, at + QPointF(0.9 * QFontMetricsF(font).height(), 0.0),
