@@ -127,7 +127,7 @@ void MainWindow::refreshView(const Recording& rec, const Frame& current, std::op
     const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
     if (!shown)
         shown = &current;
-    view_->setBalls(shown->p);
+    view_->setBalls(shown->p, shown->q);
     if (controller_.layout().axes == 1) {
         view_->setTrace({}); // the vertical scene's trace would hide the ball's own line
         return;

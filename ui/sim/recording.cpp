@@ -51,9 +51,11 @@ void Recording::add(long long step, const State& s)
     const Eigen::Index b = trackedBall_;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
     track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene);
+    orientations_.follow(s); // every step: the balls turn between the kept frames too
     if (step % frameStride_ != 0)
         return;
     frames_.push_back(makeFrame(step, s, scene));
+    frames_.back().q = orientations_.floats();
     if (frames_.size() == 1)
         maxFrames_ = std::max<std::size_t>(frameBudget_ / std::max<std::size_t>(frames_.front().bytes(), 1), 2);
     while (frames_.size() > maxFrames_)
@@ -66,6 +68,13 @@ void Recording::truncateFrom(long long step)
     const auto from =
         std::lower_bound(frames_.begin(), frames_.end(), step, [](const Frame& f, long long s) { return f.step < s; });
     frames_.erase(from, frames_.end());
+    // The balls turn on from the last frame kept: between the frames the steps are not
+    // kept, so the first step added after the fork spans them (O1 at the mean of the two
+    // ends' spins, exact where the spin holds).
+    if (frames_.empty())
+        orientations_.clear();
+    else
+        orientations_.restart(frames_.back().t, frames_.back().q, frames_.back().w);
 }
 
 void Recording::thinFrames()

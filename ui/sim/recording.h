@@ -9,6 +9,8 @@
 #include "ui/charts/motion_track.h"
 #include "ui/charts/scene_layout.h"
 
+#include "ui/view/ball_orientation.h"
+
 #include "core/state.h"
 
 #include <cstddef>
@@ -25,12 +27,17 @@ struct Frame {
     // Angular velocities, x, y, z per ball, where the balls turn (State::spins()); empty
     // where they do not.
     std::vector<float> w;
+    // Orientations, kOrientationFloats per ball (quaternion x, y, z, w; see
+    // ui/view/ball_orientation.h), where the balls turn: the 3D view turns each ball's
+    // pattern by it. Filled by the recording (integrated over every step, not only the
+    // kept frames); empty where the balls do not turn.
+    std::vector<float> q;
     ConservationSample scene; // of all balls: energy, momentum, moving balls, impacts
 
     int balls() const { return static_cast<int>(p.size() / 3); }
     bool spins() const { return !w.empty(); }
     // What the frame's numbers take (the recording's budget counts it).
-    std::size_t bytes() const { return sizeof(float) * (p.size() + v.size() + w.size()); }
+    std::size_t bytes() const { return sizeof(float) * (p.size() + v.size() + w.size() + q.size()); }
     // Ball i's angular velocity; zero where the frame has none.
     Eigen::Vector3d spin(int i) const
     {
@@ -43,7 +50,8 @@ struct Frame {
 
 // The frame of `s` and, in the same pass over the balls, what `meter` measures of it.
 Frame makeFrame(long long step, const State& s, const ConservationMeter& meter);
-// The frame of `s` with `scene` measured already.
+// The frame of `s` with `scene` measured already. Neither fills the orientations (q): they
+// come from the recording, which follows every step.
 Frame makeFrame(long long step, const State& s, const ConservationSample& scene);
 
 class Recording {
@@ -57,8 +65,13 @@ public:
     void add(long long step, const State& s);
 
     // Forgets every state of step `step` and later: the run forks back to that step and
-    // records its new course from there.
+    // records its new course from there, the balls turning on from the orientations of the
+    // last frame kept before it.
     void truncateFrom(long long step);
+
+    // The orientations (Frame::q) of state `s`, the step after the last one added: those
+    // of the frame drawn while the run plays, before that state is recorded.
+    std::vector<float> orientationsAt(const State& s) const { return orientations_.floatsAt(s); }
 
     // Follows another ball: its track is rebuilt from the frames (coarser where the
     // frames are), and continues at every step from here on.
@@ -85,6 +98,7 @@ private:
     long long frameStride_ = 1;
     std::vector<Frame> frames_;
     MotionTrack track_;
+    BallOrientations orientations_; // of the last state added, in double precision
 };
 
 } // namespace ab::ui

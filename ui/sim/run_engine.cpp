@@ -305,6 +305,7 @@ void RunEngine::publishHealth()
 void RunEngine::publishCurrent()
 {
     current_ = makeFrame(status_.steps, state_, meter_);
+    current_.q = recording_.orientationsAt(state_); // state_ is recorded at the next step
     status_.t = state_.t;
     status_.energy = current_.scene.energy.total();
 }

@@ -146,7 +146,7 @@ QImage AnimationFrames::frame(long long k)
     const std::vector<float>& xyz = source_->advanceTo(t);
     simulate_ += seconds(timer);
     timer.restart();
-    const QImage view = view_.render(xyz, source_->trace());
+    const QImage view = view_.render(xyz, source_->trace(), source_->orientations());
     // Composed in QPainter's native format (drawing into packed RGB converts every pixel
     // on a slow path: 4x the cost at 720p), handed over as packed RGB.
     QImage out(request_.video.width, request_.video.height, QImage::Format_RGB32);

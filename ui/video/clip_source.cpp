@@ -31,6 +31,7 @@ ClipSource::ClipSource(const RunSpec& spec, long long steps, int ball, bool trac
     : sim_(makeSimulation(spec)), maxSteps_(steps), ball_(ball), traceOn_(trace)
 {
     shown_ = sim_->start();
+    orientations_.follow(shown_);
     if (traceOn_ && ball_ < shown_.size())
         trace_.emplace_back(float(shown_.p(0, ball_)), float(shown_.p(1, ball_)), float(shown_.p(2, ball_)));
 }
@@ -64,6 +65,7 @@ const std::vector<float>& ClipSource::advanceTo(double t)
     while (stepOnce() && reached(next_.t, t)) {
         std::swap(shown_, next_);
         haveNext_ = false;
+        orientations_.follow(shown_);
         if (traceOn_ && ball_ < shown_.size() && steps_ % traceStride_ == 0) {
             trace_.emplace_back(float(shown_.p(0, ball_)), float(shown_.p(1, ball_)), float(shown_.p(2, ball_)));
             if (trace_.size() > kMaxTrace) {
@@ -80,6 +82,7 @@ const std::vector<float>& ClipSource::advanceTo(double t)
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t k = 0; k < 3; ++k)
             xyz_[3 * i + k] = float(shown_.p(Eigen::Index(k), Eigen::Index(i)));
+    q_ = orientations_.floats();
     return xyz_;
 }
 

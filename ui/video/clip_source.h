@@ -6,6 +6,7 @@
 #pragma once
 
 #include "ui/charts/motion_track.h"
+#include "ui/view/ball_orientation.h"
 
 #include "core/simulation.h"
 
@@ -29,6 +30,9 @@ public:
     // good state (warning() says when).
     const std::vector<float>& advanceTo(double t);
     const std::vector<QVector3D>& trace() const { return trace_; }
+    // The orientations of the state shown (kOrientationFloats per ball), integrated over
+    // every step as the window's recording does; empty where the balls do not turn.
+    const std::vector<float>& orientations() const { return q_; }
     double shownTime() const { return shown_.t; }
     const std::string& warning() const { return warning_; }
     const Simulation& simulation() const { return *sim_; }
@@ -44,6 +48,8 @@ private:
     State shown_, next_;
     bool haveNext_ = false, ended_ = false;
     std::vector<float> xyz_;
+    BallOrientations orientations_;
+    std::vector<float> q_;
     std::vector<QVector3D> trace_;
     long long traceStride_ = 1;
     std::string warning_;

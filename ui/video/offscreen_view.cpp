@@ -81,10 +81,12 @@ void OffscreenView::setScene(const SceneLayout& layout, const QString& lengthUni
         frameSceneCamera(camera_, geometry_, layout_, float(size_.width()) / float(size_.height()));
 }
 
-QImage OffscreenView::render(const std::vector<float>& xyz, const std::vector<QVector3D>& trace)
+QImage OffscreenView::render(const std::vector<float>& xyz, const std::vector<QVector3D>& trace,
+                             const std::vector<float>& orientations)
 {
     makeCurrent();
     renderer_->setBalls(xyz);
+    renderer_->setOrientations(orientations);
     const bool has = selected_ >= 0 && std::size_t(selected_) < colours_.size();
     const QColor traceColour =
         has ? QColor::fromRgb(colours_[std::size_t(selected_)]).darker(150) : QColor(Qt::darkGray);

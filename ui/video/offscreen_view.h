@@ -43,8 +43,11 @@ public:
     // The scene to draw; the camera is framed for this size unless `pose` places it.
     void setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours, int selected,
                   const QColor& background, const std::optional<CameraPose>& pose);
-    // Draws the balls (x y z per ball) and the selected ball's trace; labels included.
-    QImage render(const std::vector<float>& xyz, const std::vector<QVector3D>& trace);
+    // Draws the balls (x y z per ball), turned by `orientations` where the balls turn
+    // (kOrientationFloats per ball; empty: no pattern), and the selected ball's trace;
+    // labels included.
+    QImage render(const std::vector<float>& xyz, const std::vector<QVector3D>& trace,
+                  const std::vector<float>& orientations = {});
 
     const OrbitCamera& camera() const { return camera_; }
     QSize size() const { return size_; }

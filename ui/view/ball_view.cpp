@@ -83,6 +83,7 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
     geometry_ = buildSceneGeometry(layout, lengthUnit);
     colours_ = std::move(colours);
     balls_.clear();
+    orientations_.clear();
     trace_.clear();
     selected_ = std::min(selected_, std::max(layout.balls - 1, 0));
     ghosts_.clear();
@@ -134,13 +135,17 @@ void BallView::turn(float yawDegrees)
     update();
 }
 
-void BallView::setBalls(const std::vector<float>& xyz)
+void BallView::setBalls(const std::vector<float>& xyz, const std::vector<float>& orientations)
 {
-    if (!std::all_of(xyz.begin(), xyz.end(), [](float x) { return std::isfinite(x); }))
+    const auto finite = [](const std::vector<float>& v) {
+        return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
+    };
+    if (!finite(xyz) || !finite(orientations))
         return; // never draw a NaN: keep the last good frame
-    if (xyz == balls_)
+    if (xyz == balls_ && orientations == orientations_)
         return;
     balls_ = xyz;
+    orientations_ = orientations;
     ballsDirty_ = true;
     update();
 }
@@ -204,8 +209,10 @@ void BallView::uploadPending()
         renderer_.setGeometry(geometry_);
     if (coloursDirty_)
         renderer_.setColours(colours_);
-    if (ballsDirty_)
+    if (ballsDirty_) {
         renderer_.setBalls(balls_);
+        renderer_.setOrientations(orientations_);
+    }
     if (ghostsDirty_)
         renderer_.setGhosts(ghosts_);
     if (traceDirty_ || coloursDirty_) {

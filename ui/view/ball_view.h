@@ -40,8 +40,10 @@ public:
     // A new scene or run: geometry, ball radius and colours. The camera is framed anew
     // when the region changes (or `reframe`), so the view adapts to each scene's size.
     void setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours, bool reframe);
-    // Ball centres, x y z per ball. A frame holding a non-finite number is not drawn.
-    void setBalls(const std::vector<float>& xyz);
+    // Ball centres, x y z per ball, and where the balls turn their orientations (Frame::q,
+    // kOrientationFloats per ball), which turn each ball's pattern; empty: plain balls. A
+    // frame holding a non-finite number is not drawn.
+    void setBalls(const std::vector<float>& xyz, const std::vector<float>& orientations = {});
     // A comparison run's ball centres, drawn ghosted, and the legend that says which run
     // is which ("solid: report, ghost: physical rk4"); empty `xyz` and `legend`: none.
     // In the vertical-only scene both runs move on one line, so the ghosts are drawn
@@ -114,6 +116,7 @@ private:
     std::vector<unsigned> colours_;
     QColor background_{0xec, 0xf0, 0xf5};
     std::vector<float> balls_;
+    std::vector<float> orientations_;
     std::vector<QVector3D> trace_;
     std::vector<float> ghosts_; // as drawn: offset already applied
     QString ghostLegend_;

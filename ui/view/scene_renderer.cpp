@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scene_renderer.h"
 
+#include "ball_orientation.h"
+
 #include <QVector2D>
 
 #include <cstddef>
@@ -34,7 +36,8 @@ std::unique_ptr<QOpenGLShaderProgram> program(const char* name, QString& error)
 SceneRenderer::SceneRenderer()
     : corners_(QOpenGLBuffer::VertexBuffer), positions_(QOpenGLBuffer::VertexBuffer),
       ghostPositions_(QOpenGLBuffer::VertexBuffer), colours_(QOpenGLBuffer::VertexBuffer),
-      flat_(QOpenGLBuffer::VertexBuffer), trace_(QOpenGLBuffer::VertexBuffer)
+      orientations_(QOpenGLBuffer::VertexBuffer), flat_(QOpenGLBuffer::VertexBuffer),
+      trace_(QOpenGLBuffer::VertexBuffer)
 {
 }
 
@@ -45,7 +48,7 @@ bool SceneRenderer::initialize(QString& error)
     initializeOpenGLFunctions();
     if (!buildPrograms(error))
         return false;
-    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &flat_, &trace_}) {
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &orientations_, &flat_, &trace_}) {
         b->create();
         b->setUsagePattern(QOpenGLBuffer::DynamicDraw);
     }
@@ -53,9 +56,17 @@ bool SceneRenderer::initialize(QString& error)
     corners_.allocate(triangleCorners, sizeof triangleCorners);
     positions_.setUsagePattern(QOpenGLBuffer::StreamDraw);
     ghostPositions_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    orientations_.setUsagePattern(QOpenGLBuffer::StreamDraw);
     for (QOpenGLVertexArrayObject* vao : {&ballVao_, &ghostVao_, &shadowVao_, &flatVao_, &traceVao_})
         vao->create();
     setupInstanced(ballVao_, positions_, true);
+    {
+        // One orientation per ball, read only where the balls turn (enabled in draw()).
+        QOpenGLVertexArrayObject::Binder bind(&ballVao_);
+        orientations_.bind();
+        glVertexAttribPointer(3, kOrientationFloats, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glVertexAttribDivisor(3, 1);
+    }
     setupInstanced(ghostVao_, ghostPositions_, true);
     setupInstanced(shadowVao_, positions_, false);
     setupFlat(flatVao_, flat_);
@@ -108,7 +119,7 @@ void SceneRenderer::release()
     ready_ = false;
     for (QOpenGLVertexArrayObject* vao : {&ballVao_, &ghostVao_, &shadowVao_, &flatVao_, &traceVao_})
         vao->destroy();
-    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &flat_, &trace_})
+    for (QOpenGLBuffer* b : {&corners_, &positions_, &ghostPositions_, &colours_, &orientations_, &flat_, &trace_})
         b->destroy();
     ballProgram_.reset();
     shadowProgram_.reset();
@@ -147,6 +158,15 @@ void SceneRenderer::setBalls(const std::vector<float>& xyz)
     balls_ = static_cast<int>(xyz.size() / 3);
     positions_.bind();
     positions_.allocate(xyz.data(), static_cast<int>(xyz.size() * sizeof(float)));
+}
+
+void SceneRenderer::setOrientations(const std::vector<float>& q)
+{
+    orientationCount_ = static_cast<int>(q.size() / kOrientationFloats);
+    if (orientationCount_ == 0)
+        return;
+    orientations_.bind();
+    orientations_.allocate(q.data(), static_cast<int>(q.size() * sizeof(float)));
 }
 
 void SceneRenderer::setGhosts(const std::vector<float>& xyz)
@@ -193,6 +213,13 @@ void SceneRenderer::draw(const RenderInputs& in)
     if (balls_ > 0) {
         useBallProgram(in, in.selected, false);
         ballVao_.bind();
+        // The pattern only with an orientation for every ball: the buffer is never read past its end.
+        const bool pattern = orientationCount_ == balls_;
+        ballProgram_->setUniformValue("pattern", pattern ? 1 : 0);
+        if (pattern)
+            glEnableVertexAttribArray(3);
+        else
+            glDisableVertexAttribArray(3);
         glDrawArraysInstanced(GL_TRIANGLES, 0, cornerCount, balls_); // every ball in one call
 
         // The floor cues after the balls: where a ball hides the floor, the depth test
@@ -249,6 +276,7 @@ void SceneRenderer::useBallProgram(const RenderInputs& in, int selected, bool gh
     ballProgram_->setUniformValue("depthTerms", QVector2D(in.projection(2, 2), in.projection(2, 3)));
     ballProgram_->setUniformValue("lightDir", QVector3D(-0.4f, 0.7f, 0.75f).normalized());
     ballProgram_->setUniformValue("ghost", ghosts ? 1 : 0);
+    ballProgram_->setUniformValue("pattern", 0); // the ghosts stay plain
     if (ghosts) // a little larger than the ball: a ghost where the ball is still shows, as a ring
     {
         ballProgram_->setUniformValue("radius", in.radius * 1.3f);

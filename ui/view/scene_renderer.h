@@ -50,6 +50,10 @@ public:
     void setGeometry(const SceneGeometry& geometry);
     void setColours(const std::vector<unsigned>& rgb);
     void setBalls(const std::vector<float>& xyz);
+    // The balls' orientations, kOrientationFloats per ball (ui/view/ball_orientation.h),
+    // where the run's balls turn: each is drawn with a beach-ball pattern turned by its own.
+    // Empty (or not one per ball): plain balls, as a run whose balls do not turn.
+    void setOrientations(const std::vector<float>& q);
     // The comparison run's ball centres (empty: none), drawn in the balls' colours.
     void setGhosts(const std::vector<float>& xyz);
     void setTrace(const std::vector<QVector3D>& points, const QColor& colour);
@@ -67,7 +71,8 @@ private:
     bool ready_ = false;
     std::unique_ptr<QOpenGLShaderProgram> ballProgram_, shadowProgram_, flatProgram_;
     QOpenGLVertexArrayObject ballVao_, ghostVao_, shadowVao_, flatVao_, traceVao_;
-    QOpenGLBuffer corners_, positions_, ghostPositions_, colours_, flat_, trace_;
+    QOpenGLBuffer corners_, positions_, ghostPositions_, colours_, orientations_, flat_, trace_;
+    int orientationCount_ = 0; // balls with an orientation uploaded
     int balls_ = 0, ghosts_ = 0, floorVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0, traceVertices_ = 0;
 };
 
