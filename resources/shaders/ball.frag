@@ -40,7 +40,7 @@ vec3 beachBall(vec3 b, vec3 colour)
     float white = smoothstep(-soft, soft, gores);
     vec3 paint = mix(colour, mix(colour, vec3(1.0), 0.85), white);
     float capSoft = fwidth(b.z) + 1e-4;
-    paint = mix(paint, mix(colour, vec3(1.0), 0.85), smoothstep(-0.9 - capSoft, -0.9 + capSoft, -b.z));
+    paint = mix(paint, mix(colour, vec3(1.0), 0.85), smoothstep(0.9 - capSoft, 0.9 + capSoft, -b.z));
     paint = mix(paint, 0.22 * colour, smoothstep(0.9 - capSoft, 0.9 + capSoft, b.z));
     return mix(colour, paint, smoothstep(3.0, 7.0, ballPixels));
 }
