@@ -1553,6 +1553,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Preset: %1</source>
         <translation>Förinställning: %1</translation>
     </message>
+    <message>
+        <source>No equation shown yet, %1 to come. Next shows the first.</source>
+        <translation>Ingen ekvation visad än, %1 kommer. Nästa visar den första.</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StatusReadout</name>

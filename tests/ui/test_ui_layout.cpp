@@ -24,6 +24,7 @@
 #include <QGraphicsTextItem>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
 #include <QScreen>
@@ -209,6 +210,31 @@ QStringList cutTexts(QWidget* root)
     return cut;
 }
 
+// The settings' labels, fields and combo boxes that reach past the scroll area's viewport
+// (hidden at its edge), or whose own text is cut.
+QStringList cutAtViewport(QScrollArea* scroll)
+{
+    QStringList cut;
+    const QRect port = scroll->viewport()->rect();
+    for (QWidget* w : scroll->widget()->findChildren<QWidget*>()) {
+        if (!w->isVisible() ||
+            !(qobject_cast<QLabel*>(w) || qobject_cast<QComboBox*>(w) || qobject_cast<QLineEdit*>(w)))
+            continue;
+        const QRect at(w->mapTo(scroll->viewport(), QPoint(0, 0)), w->size());
+        if (at.left() < port.left() || at.right() > port.right())
+            cut << QStringLiteral("%1 at x %2-%3 of a %4 px viewport")
+                       .arg(where(w))
+                       .arg(at.left())
+                       .arg(at.right())
+                       .arg(port.width());
+        if (auto* label = qobject_cast<QLabel*>(w))
+            checkLabel(label, cut);
+        else if (auto* combo = qobject_cast<QComboBox*>(w))
+            checkCombo(combo, cut);
+    }
+    return cut;
+}
+
 void settle()
 {
     for (int i = 0; i < 4; ++i) {
@@ -293,15 +319,23 @@ private slots:
         auto* settings = w.findChild<QScrollArea*>("settingsScroll");
         QVERIFY(settings);
         w.resize(screenSize());
-        // As wide as its choices where that is at most 30 % of the window (1920 px), else
-        // those 30 % (1280 px, where it scrolls sideways).
+        // As wide as its choices where that is at most 30 % of the window, else those 30 %,
+        // where the choices still fit whole: no sideways scroll at 1280 px either.
         const int need = settings->widget()->minimumWidth() + settings->verticalScrollBar()->sizeHint().width();
         const int expected = std::min(need, int(0.3 * screenSize().width()));
         QTRY_VERIFY2(
             settings->width() >= expected - 2,
             qPrintable(QStringLiteral("settings column %1 px, expected %2").arg(settings->width()).arg(expected)));
-        if (need <= 0.3 * screenSize().width())
+        settle();
+        QVERIFY(!settings->horizontalScrollBar()->isVisible());
+        settle();
+        for (SceneId scene : {SceneId::Bounce1d, SceneId::Box3d, SceneId::TwoBalls, SceneId::ManyBalls}) {
+            w.showScene(scene);
+            settle();
             QVERIFY(!settings->horizontalScrollBar()->isVisible());
+            const QStringList cut = cutAtViewport(settings);
+            QVERIFY2(cut.isEmpty(), qPrintable(cut.join("\n")));
+        }
     }
 
     void noTextIsCutOnAnyChartPage_data() { addRows(); }

@@ -47,7 +47,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
 {
     setObjectName("chartPanel");
     auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setContentsMargins(0, 0, 6, 0); // the hint and the last tab clear the window's edge
     auto* row = new QHBoxLayout;
     row->addWidget(new QLabel(tr("Charts of ball")));
     ball_ = new QSpinBox;

@@ -93,7 +93,10 @@ QString StageNavigator::describe(const SceneInfo& s, int revealed)
         QStringLiteral("<h3 style='margin-bottom:2px'>%1: %2</h3>").arg(tr("Stage %1").arg(s.stage), html(s.title));
     out += QStringLiteral("<p style='margin-top:0'><i>%1 %2</i></p>").arg(tr("Report:"), html(s.reportRef));
     out += QStringLiteral("<p>%1</p>").arg(html(s.summary));
-    out += QStringLiteral("<p><b>%1</b></p><table cellspacing='0' cellpadding='2'>").arg(tr("Equations"));
+    // The walk opens a stage with none of its equations shown: no heading over nothing.
+    if (shown > 0)
+        out += QStringLiteral("<p><b>%1</b></p>").arg(tr("Equations"));
+    out += QStringLiteral("<table cellspacing='0' cellpadding='2'>");
     for (int i = 0; i < shown; ++i) {
         const Equation& e = s.equations[static_cast<std::size_t>(i)];
         // In the walk the newest equation stands out; the formulas are the report's own.
@@ -222,7 +225,8 @@ void StageNavigator::showText()
     if (!walking_)
         return;
     const int count = equationCount();
-    progress_->setText(revealed_ < count
+    progress_->setText(revealed_ == 0 ? tr("No equation shown yet, %1 to come. Next shows the first.").arg(count)
+                       : revealed_ < count
                            ? tr("Equation %1 of %2. Next shows the next equation.").arg(revealed_).arg(count)
                            : tr("All %1 equations shown. Next opens the next stage.").arg(count));
     text_->verticalScrollBar()->setValue(text_->verticalScrollBar()->maximum()); // keep the newest in sight
