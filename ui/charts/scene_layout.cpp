@@ -61,8 +61,11 @@ SceneLayout layoutFor(const RunSpec& spec)
     switch (spec.scene) {
     case SceneId::Bounce1d:
         return bounce1dLayout(v);
-    case SceneId::Box3d:
-        return cornerBoxLayout(v, v.real("box") / 80.0, 1); // a point for contact; drawn at 1/80 of the box
+    case SceneId::Box3d: {
+        SceneLayout l = cornerBoxLayout(v, v.real("box") / 80.0, 1); // a point for contact; drawn at 1/80 of the box
+        l.drawnInset = l.ballRadius;
+        return l;
+    }
     case SceneId::TwoBalls:
         return cornerBoxLayout(v, v.real("r"), 2);
     case SceneId::ManyBalls:

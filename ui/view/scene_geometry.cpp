@@ -77,8 +77,10 @@ void addHeightScale(SceneGeometry& g, const SceneLayout& l, const QString& unit)
 // faint side walls, and labels naming the axes and the side.
 void addBox(SceneGeometry& g, const SceneLayout& l, const QString& unit)
 {
-    const QVector3D lo(float(l.region.min().x()), float(l.region.min().y()), float(l.region.min().z()));
-    const QVector3D hi(float(l.region.max().x()), float(l.region.max().y()), float(l.region.max().z()));
+    // Drawn `drawnInset` beyond the faces the centres meet (the floor and the four walls).
+    const float in = float(l.drawnInset);
+    const QVector3D lo(float(l.region.min().x()) - in, float(l.region.min().y()) - in, float(l.region.min().z()) - in);
+    const QVector3D hi(float(l.region.max().x()) + in, float(l.region.max().y()), float(l.region.max().z()) + in);
     auto corner = [&](int i) {
         return QVector3D(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
     };
@@ -93,7 +95,7 @@ void addBox(SceneGeometry& g, const SceneLayout& l, const QString& unit)
     quad(g.walls, corner(1), corner(5), corner(7), corner(3), wallColour); // x = hi
     quad(g.walls, corner(0), corner(1), corner(3), corner(2), wallColour); // z = lo
     quad(g.walls, corner(4), corner(5), corner(7), corner(6), wallColour); // z = hi
-    const float side = hi.x() - lo.x();
+    const float side = float(l.region.sizes().x()); // the box the centres move in, as its parameter says
     const char* names[3] = {"x", "y", "z"};
     for (int axis = 0; axis < 3; ++axis) {
         QVector3D end = corner(1 << axis);
@@ -114,9 +116,10 @@ SceneGeometry buildSceneGeometry(const SceneLayout& l, const QString& lengthUnit
     g.lo = QVector3D(float(lo.x()), float(lo.y()), float(lo.z()));
     g.hi = QVector3D(float(hi.x()), float(hi.y()), float(hi.z()));
     g.arrowStep = float(0.02 * (hi - lo).maxCoeff());
-    const float y = float(l.floorY);
+    const float y = float(l.floorY - l.drawnInset);
     if (l.walls) {
-        addFloor(g, g.lo.x(), g.hi.x(), g.lo.z(), g.hi.z(), y);
+        const float in = float(l.drawnInset);
+        addFloor(g, g.lo.x() - in, g.hi.x() + in, g.lo.z() - in, g.hi.z() + in, y);
         addBox(g, l, lengthUnit);
     } else {
         addFloor(g, g.lo.x(), g.hi.x(), g.lo.z(), g.hi.z(), y);

@@ -57,8 +57,8 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
     in.pixelsPerUnit = camera.pixelsPerUnit(size.height());
     in.radius = float(layout.ballRadius);
     in.minPixels = smallestBallPixels(layout, size.height(), scale);
-    in.selected = layout.balls > 1 ? selected : -1; // one ball needs no marking
-    in.floorY = float(layout.floorY);
+    in.selected = layout.balls > 1 ? selected : -1;       // one ball needs no marking
+    in.floorY = float(layout.floorY - layout.drawnInset); // the drawn floor, where the shadows lie
     // A few balls get a cue that darkens as they come down; a crowd (thousands, piling up
     // on the floor) only where a ball is within a diameter of it: the cues of the layers
     // above would lie under the bottom layer's balls, and under software OpenGL drawing
