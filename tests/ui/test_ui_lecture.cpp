@@ -93,7 +93,7 @@ private slots:
             QCOMPARE(nav.revealed(), k);
             QCOMPARE(shownEquations(nav), firstShown(nav, k));
             QCOMPARE(nav.text().contains(QStringLiteral("Notes on the report")), k == count); // notes after the last
-            QCOMPARE(nav.text().contains(QStringLiteral("Equations")), k > 0); // no heading over nothing
+            QCOMPARE(nav.text().contains(QStringLiteral("Equations")), k > 0);                // no heading over nothing
             lecture.next();
         }
         QCOMPARE(nav.current(), SceneId::Box3d);

@@ -235,43 +235,39 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "the report's own discrete rules, bounce counters and all (one scheme per stage)"),
     QT_TRANSLATE_NOOP("core", "textbook rigid-ball physics: momentum-conserving impulses, a physical rest rule"),
     // The built-in presets' names and descriptions (resources/presets/*.json).
-    QT_TRANSLATE_NOOP("core",
-                      "A sliding ball starts to roll: the 5/7 rule"),
-    QT_TRANSLATE_NOOP("core",
-                      "A ball set down on the floor at 5 m/s without spin, on a floor with little friction (mu = 0.02). "
-                      "Friction at its contact point slows the ball at mu g = 0.196 m/s^2 and spins it up, until the "
-                      "contact point stops slipping at t* = q v0 / ((1 + q) mu g) = 7.274 s (q = 2/5, a solid ball). From "
-                      "then on it rolls at 5/7 of its start speed, 3.571 m/s, with r w = v, and no friction acts on it any "
-                      "more: the pattern on the ball turns faster until it rolls, the spin chart levels off, and the energy"
-                      " chart shows rotation taking its share (and sliding losing some)."),
-    QT_TRANSLATE_NOOP("core",
-                      "Back-spin: a ball that bounces backwards"),
-    QT_TRANSLATE_NOOP("core",
-                      "A ball thrown forwards at 6 m/s from 100 m up, with back-spin: w = 6.8 rad/s about z, r w = 25.5 m/s"
-                      " against its motion. At the floor friction grips the contact point (mu = 0.5, beta = 0: the contact "
-                      "point stops), and the angular momentum about it, m r n x v + I w, is kept (S13): the ball leaves at "
-                      "v' = (v - q r w) / (1 + q) = -3 m/s, backwards, rolling with r w = 3 m/s. Without the spin it would "
-                      "have bounced on forwards at 5/7 of 6 m/s."),
-    QT_TRANSLATE_NOOP("core",
-                      "A superball under a table comes back out"),
-    QT_TRANSLATE_NOOP("core",
-                      "Garwin's superball (1969): with k = 1 and beta = 1 an impact that sticks reverses the contact "
-                      "point's slip and loses no energy. Thrown under a table, the ball bounces off the floor, then off the"
-                      " underside of the table, and comes back out towards the thrower. The box has no table, so gravity is"
-                      " off and two of its walls stand in, seen from above: the wall z = 0 (at the bottom) is the floor and"
-                      " z = 60 (at the top) the table's underside. The ball comes in from the left at 10 m/s without spin; "
-                      "the floor sends it on at 3/7 of that, 4.29 m/s, spinning with r w = 2 u / (1 + q) = 14.3 m/s (S9), "
-                      "and the table sends it back out to the left at 6.33 m/s. The energy stays the same to round-off."),
-    QT_TRANSLATE_NOOP("core",
-                      "Two balls with friction: spin passed from one ball to the other"),
-    QT_TRANSLATE_NOOP("core",
-                      "Ball 1 spins about the vertical at 4 rad/s and runs at 5 m/s into ball 2, which rests without spin; "
-                      "gravity is off, so nothing else touches them until the walls, 5.7 s later. At the contact friction "
-                      "grips (mu = 0.5, beta = 0): one tangential impulse acts on the two balls at their one contact point,"
-                      " in opposite directions, so their momentum is kept (they move apart sideways at 1.14 m/s each) and "
-                      "both spins change by the same amount in the same sense (S11-S12): ball 1 keeps 2.57 rad/s and ball 2"
-                      " starts to spin at -1.43 rad/s, like a gear driven by the first. Choose ball 2 in the charts to "
-                      "follow its spin."),
+    QT_TRANSLATE_NOOP("core", "A sliding ball starts to roll: the 5/7 rule"),
+    QT_TRANSLATE_NOOP(
+        "core", "A ball set down on the floor at 5 m/s without spin, on a floor with little friction (mu = 0.02). "
+                "Friction at its contact point slows the ball at mu g = 0.196 m/s^2 and spins it up, until the "
+                "contact point stops slipping at t* = q v0 / ((1 + q) mu g) = 7.274 s (q = 2/5, a solid ball). From "
+                "then on it rolls at 5/7 of its start speed, 3.571 m/s, with r w = v, and no friction acts on it any "
+                "more: the pattern on the ball turns faster until it rolls, the spin chart levels off, and the energy"
+                " chart shows rotation taking its share (and sliding losing some)."),
+    QT_TRANSLATE_NOOP("core", "Back-spin: a ball that bounces backwards"),
+    QT_TRANSLATE_NOOP(
+        "core", "A ball thrown forwards at 6 m/s from 100 m up, with back-spin: w = 6.8 rad/s about z, r w = 25.5 m/s"
+                " against its motion. At the floor friction grips the contact point (mu = 0.5, beta = 0: the contact "
+                "point stops), and the angular momentum about it, m r n x v + I w, is kept (S13): the ball leaves at "
+                "v' = (v - q r w) / (1 + q) = -3 m/s, backwards, rolling with r w = 3 m/s. Without the spin it would "
+                "have bounced on forwards at 5/7 of 6 m/s."),
+    QT_TRANSLATE_NOOP("core", "A superball under a table comes back out"),
+    QT_TRANSLATE_NOOP(
+        "core", "Garwin's superball (1969): with k = 1 and beta = 1 an impact that sticks reverses the contact "
+                "point's slip and loses no energy. Thrown under a table, the ball bounces off the floor, then off the"
+                " underside of the table, and comes back out towards the thrower. The box has no table, so gravity is"
+                " off and two of its walls stand in, seen from above: the wall z = 0 (at the bottom) is the floor and"
+                " z = 60 (at the top) the table's underside. The ball comes in from the left at 10 m/s without spin; "
+                "the floor sends it on at 3/7 of that, 4.29 m/s, spinning with r w = 2 u / (1 + q) = 14.3 m/s (S9), "
+                "and the table sends it back out to the left at 6.33 m/s. The energy stays the same to round-off."),
+    QT_TRANSLATE_NOOP("core", "Two balls with friction: spin passed from one ball to the other"),
+    QT_TRANSLATE_NOOP(
+        "core", "Ball 1 spins about the vertical at 4 rad/s and runs at 5 m/s into ball 2, which rests without spin; "
+                "gravity is off, so nothing else touches them until the walls, 5.7 s later. At the contact friction "
+                "grips (mu = 0.5, beta = 0): one tangential impulse acts on the two balls at their one contact point,"
+                " in opposite directions, so their momentum is kept (they move apart sideways at 1.14 m/s each) and "
+                "both spins change by the same amount in the same sense (S11-S12): ball 1 keeps 2.57 rad/s and ball 2"
+                " starts to spin at -1.43 rad/s, like a gear driven by the first. Choose ball 2 in the charts to "
+                "follow its spin."),
     QT_TRANSLATE_NOOP("core", "Stage 1 as in the report: a ball bouncing on a floor"),
     QT_TRANSLATE_NOOP(
         "core", "The report's stage 1 (section 2.2.1, Appendix A, Figure 2.5): a ball dropped from height 2000 with "
