@@ -5,6 +5,7 @@
 // checked against hand-worked impacts (S3-S4, S9-S13).
 #include "ui/charts/chart_data_csv.h"
 #include "ui/charts/motion_chart.h"
+#include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
 #include "ui/panels/stage_navigator.h"
@@ -70,6 +71,23 @@ std::size_t firstJump(const ab::ui::MotionTrack& m, int axis, double jump)
 class UiSpinCharts : public QObject {
     Q_OBJECT
 private slots:
+    void cleanup() { ab::ui::installLanguage(ab::ui::Language::English); }
+
+    // The window is rebuilt in the new language with the run it had; the preset's text
+    // beside it is translated as it is shown, so it follows too.
+    void aPresetsTextFollowsALanguageChosenAfterItOpened()
+    {
+        MainWindow english;
+        QVERIFY(english.findChild<ab::ui::PresetActions*>()->open("box3d-sliding-to-rolling") == std::nullopt);
+        QVERIFY(english.navigator()->text().contains("A sliding ball starts to roll"));
+        ab::ui::installLanguage(ab::ui::Language::Swedish);
+        MainWindow swedish;
+        swedish.takeRunOf(english);
+        QVERIFY2(swedish.navigator()->text().contains(QString::fromUtf8("En glidande boll börjar rulla")),
+                 qPrintable(swedish.navigator()->text().left(200)));
+        QVERIFY(!swedish.navigator()->text().contains("A sliding ball"));
+    }
+
     // A ball set down at v0 = 5 m/s on a floor with mu = 0.02 (q = 2/5): v = v0 - mu g t
     // until t* = q v0 / ((1 + q) mu g) = 7.274 s (S3), then 5/7 v0 with r w = v (S4). The
     // event integrator follows it exactly; the spin chart draws w_z = -v / r (rolling along

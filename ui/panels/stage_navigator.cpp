@@ -217,7 +217,8 @@ void StageNavigator::showText()
     QString preset;
     if (!presetName_.isEmpty() && presetScene_ == current_)
         preset = QStringLiteral("<h3 style='margin-bottom:2px'>%1</h3><p style='margin-top:0'>%2</p><hr>")
-                     .arg(tr("Preset: %1").arg(presetName_.toHtmlEscaped()), presetDescription_.toHtmlEscaped());
+                     .arg(tr("Preset: %1").arg(coreText(presetName_.toStdString()).toHtmlEscaped()),
+                          coreText(presetDescription_.toStdString()).toHtmlEscaped());
     // In the walk the run's section comes once the stage's own equations are all shown.
     const bool all = !walking_ || revealed_ >= equationCount();
     text_->setHtml(preset + describe(info, walking_ ? revealed_ : -1) + (all ? runSection_ : QString()));

@@ -35,8 +35,9 @@ public:
     // once every equation is shown. Core texts pass through the translator.
     static QString describe(const SceneInfo& scene, int revealed = -1);
 
-    // A preset's name and explanation, shown above the stage's own text while its stage
-    // is shown; an empty name clears it (the lecturer chose a stage).
+    // A preset's name and explanation in its own words (English for the built-in ones),
+    // shown translated above the stage's own text while its stage is shown, so a language
+    // chosen later applies to them too; an empty name clears it (the lecturer chose a stage).
     void setPreset(SceneId scene, const QString& name, const QString& description);
     QString presetName() const { return presetName_; }
     QString presetDescription() const { return presetDescription_; }

@@ -156,7 +156,10 @@ void applyPresetToWindow(MainWindow& window, const Preset& preset)
         throw InputError(presetName(preset) + ": " + error->toStdString());
     showCharts(*window.charts(), charts);
     // What the preset is about, in the navigator beside the stage it opens.
-    window.navigator()->setPreset(preset.scene, coreText(preset.name), coreText(preset.description));
+    // In the preset's own words: the navigator translates them each time it shows them, so a
+    // language chosen later applies to them too.
+    window.navigator()->setPreset(preset.scene, QString::fromStdString(preset.name),
+                                  QString::fromStdString(preset.description));
     window.controller().selectBall(preset.view.selectedBall.value_or(0));
     if (BallView* view = window.view())
         placeCamera(*view, preset.view);
