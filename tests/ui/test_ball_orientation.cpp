@@ -50,7 +50,8 @@ ab::ui::Recording recordingOfOneBall(std::size_t budgetFrames)
 {
     ab::RunSpec spec(ab::SceneId::Box3d);
     spec.model = ab::ModelKind::Physical;
-    const auto sim = ab::makeSimulation(spec);
+    // The meter keeps a pointer to the simulation's World: the simulation outlives every recording.
+    static const std::unique_ptr<ab::Simulation> sim = ab::makeSimulation(spec);
     const std::size_t frameBytes = 13 * sizeof(float); // p, v, w and q of one ball
     return ab::ui::Recording(ab::ui::layoutFor(spec), ab::ConservationMeter(*sim), 0, budgetFrames * frameBytes);
 }
