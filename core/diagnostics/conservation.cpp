@@ -24,6 +24,11 @@ bool nonZeroVector(const ParamValues& v, const char* key)
 
 } // namespace
 
+bool roughContacts(const ParamValues& v)
+{
+    return v.indexOf("mu") && v.indexOf("beta") && v.real("mu") > 0.0 && v.real("beta") > -1.0;
+}
+
 bool ballsTurn(const RunSpec& spec)
 {
     if (spec.model != ModelKind::Physical)
@@ -35,11 +40,11 @@ bool ballsTurn(const RunSpec& spec)
     case SceneId::Bounce1d: // its ball spins only about the vertical, which the floor never changes
         return v.indexOf("w0") && v.real("w0") != 0.0;
     case SceneId::Box3d:
-        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || nonZeroVector(v, "w0");
+        return roughContacts(v) || nonZeroVector(v, "w0");
     case SceneId::TwoBalls:
-        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || nonZeroVector(v, "w1") || nonZeroVector(v, "w2");
+        return roughContacts(v) || nonZeroVector(v, "w1") || nonZeroVector(v, "w2");
     case SceneId::ManyBalls:
-        return (v.real("mu") > 0.0 && v.real("beta") > -1.0) || v.real("spin") > 0.0;
+        return roughContacts(v) || v.real("spin") > 0.0;
     }
     return false;
 }

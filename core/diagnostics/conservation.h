@@ -78,6 +78,9 @@ private:
 // `w2`, many-balls' `spin`, or an `--init` state with spins). The report model's balls
 // never turn: it has no rotation.
 bool ballsTurn(const RunSpec& spec);
+// Whether the contacts of a scene's parameters have friction (mu > 0 and beta > -1,
+// where the scene has both): Walton's impulse and rolling friction act.
+bool roughContacts(const ParamValues& params);
 
 // The meter built for `sim`, applied to `s` (convenient for one state; a run builds the
 // meter once).

@@ -26,11 +26,6 @@ QString row(const QString& number, const QString& formula, const QString& meanin
         .arg(number, formula.toHtmlEscaped(), meaning.toHtmlEscaped());
 }
 
-bool rough(const ParamValues& v)
-{
-    return v.indexOf("mu") && v.indexOf("beta") && v.real("mu") > 0.0 && v.real("beta") > -1.0;
-}
-
 struct Units {
     QString length, time;
 };
@@ -64,7 +59,7 @@ QString SpinEquations::html(const Simulation& sim)
     }
     out += row(QStringLiteral("S1"), QStringLiteral("u = v_t \u2212 r \u03c9 \u00d7 n"),
                tr("the slip of the contact point along a wall of inward normal n; u = 0: the ball rolls"));
-    if (!rough(spec.params)) {
+    if (!roughContacts(spec.params)) {
         out += row(QStringLiteral("S9"), QStringLiteral("P_t = 0"),
                    tr("smooth contacts (\u03bc = 0 or \u03b2 = −1): no impulse along a wall, so every spin "
                       "stays as it started"));
