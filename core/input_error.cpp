@@ -50,7 +50,8 @@ const std::vector<std::string_view>& refusalTexts()
     static const std::vector<std::string_view> texts{
         notANumber,    tooSmallForDouble, tooLargeForDouble, notFinite,       valueNotFinite, notWhole,
         wholeTooLarge, beyondExact,       notVector,         notFiniteVector, outsideRange,   componentOutsideRange,
-        outsideBox,    noRoomInBox,       stepNotPositive,   stepsOutside,    compareWith,    compareStart};
+        outsideBox,    noRoomInBox,       stepNotPositive,   stepsOutside,    compareWith,    compareStart,
+        streetTooNarrow, carsDoNotFit, carsTooWide};
     return texts;
 }
 

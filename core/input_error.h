@@ -72,6 +72,10 @@ inline constexpr std::string_view noRoomInBox = "box: %1 leaves no room for a ba
 inline constexpr std::string_view stepNotPositive = "dt: %1 must be positive";
 inline constexpr std::string_view stepsOutside = "steps: %1 is outside [1, %2]";
 inline constexpr std::string_view compareWith = "compare with %1: %2";
+inline constexpr std::string_view streetTooNarrow =
+    "width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)";
+inline constexpr std::string_view carsDoNotFit = "cars: %1 do not fit along these blocks; they hold at most %2";
+inline constexpr std::string_view carsTooWide = "cars: a roadway of %1 m is too narrow for parked cars";
 inline constexpr std::string_view compareStart =
     "compare with %1: the two runs do not start at the same time with the same balls";
 } // namespace refusal

@@ -56,9 +56,9 @@ ParamSpec positive(ParamSpec spec)
 
 const std::vector<const SceneInfo*>& allScenes()
 {
-    static const std::array<SceneInfo, 4> infos = {scenes::makeBounce1d(), scenes::makeBox3d(), scenes::makeTwoBalls(),
-                                                   scenes::makeManyBalls()};
-    static const std::vector<const SceneInfo*> list = {&infos[0], &infos[1], &infos[2], &infos[3]};
+    static const std::array<SceneInfo, 5> infos = {scenes::makeBounce1d(), scenes::makeBox3d(), scenes::makeTwoBalls(),
+                                                   scenes::makeManyBalls(), scenes::makeStreet()};
+    static const std::vector<const SceneInfo*> list = {&infos[0], &infos[1], &infos[2], &infos[3], &infos[4]};
     return list;
 }
 

@@ -13,7 +13,7 @@
 
 namespace ab {
 
-enum class SceneId { Bounce1d, Box3d, TwoBalls, ManyBalls };
+enum class SceneId { Bounce1d, Box3d, TwoBalls, ManyBalls, Street };
 enum class ModelKind { Report, Physical };
 enum class Integrator { Euler, SymplecticEuler, Verlet, Rk4, Event, ImplicitEuler, ImplicitMidpoint };
 // Where impacts are found: inside the step (time of impact solved, step split there) or,
@@ -38,8 +38,8 @@ struct ReportNote {
 
 struct SceneInfo {
     SceneId id;
-    std::string key; // contract id: bounce1d, box3d, two-balls, many-balls
-    int stage = 0;   // 1..4, the report's order
+    std::string key; // contract id: bounce1d, box3d, two-balls, many-balls, street
+    int stage = 0;   // 1..4, the report's order; 5 the street
     std::string title;
     std::string reportRef; // sections and appendices of the report
     std::string summary;   // two or three sentences for the stage navigator

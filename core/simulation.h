@@ -15,11 +15,18 @@
 namespace ab {
 
 struct RunSpec {
-    explicit RunSpec(SceneId id) : scene(id), params(sceneInfo(id).defaults()) {}
+    // The street has no report model (its stage is the physical model's), and its flight is
+    // exact between events: its runs start physical, `event`.
+    explicit RunSpec(SceneId id)
+        : scene(id), model(id == SceneId::Street ? ModelKind::Physical : ModelKind::Report),
+          integrator(id == SceneId::Street ? Integrator::Event : Integrator::SymplecticEuler),
+          params(sceneInfo(id).defaults())
+    {
+    }
 
     SceneId scene;
-    ModelKind model = ModelKind::Report;
-    Integrator integrator = Integrator::SymplecticEuler;
+    ModelKind model;
+    Integrator integrator;
     ImpactMode impacts = ImpactMode::Located;
     Broadphase broadphase = Broadphase::Grid;
     int threads = 1;

@@ -10,6 +10,7 @@ SceneInfo makeBounce1d();
 SceneInfo makeBox3d();
 SceneInfo makeTwoBalls();
 SceneInfo makeManyBalls();
+SceneInfo makeStreet();
 
 // Short constructors for table rows, so each row reads as one line of the table.
 ParamSpec real(std::string key, std::string symbol, std::string unit, double def, double min, double max,
