@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The contacts between the street's balls (street_engine.h point 2b).
 // 1. The balls roll and bounce in a thin layer over a long, narrow street, so the grid is one
-//    of columns: cells over (x, z) at least 2.5 r wide (contact 2 r and a skin of r/2), the
+//    of columns: cells over (x, z) at least 3 r wide (contact 2 r and a skin of r), the
 //    street's whole length and width, every height in one column. A centre beyond the grid
 //    falls in its outermost column (clamping never separates two coordinates). Each column
 //    keeps a linked list of its balls, latest first: O(N) a substep, however many columns.
@@ -10,10 +10,10 @@
 //    and +z in the same x), so every pair is found once, in an order that does not depend on
 //    the threads; a height test then the exact distance keep only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
-//    more than 1e-7 r (Gauss-Seidel; 16 passes at most): eqs 2.4-2.7 along the line of
-//    centres with restitution e, Walton's impulse between rough balls (pair_friction.h), the
-//    overlap parted half each; a ball moved then meets the street again (settle). The first
-//    pass also takes the pairs that will meet within the next substep (speculative contacts).
+//    more than 1e-4 r (Gauss-Seidel; 4 passes at most): eqs 2.4-2.7 along the line of centres
+//    with restitution e, Walton's impulse between rough balls (pair_friction.h), the overlap
+//    parted half each; a ball moved then meets the street again (settle). The first pass also
+//    takes the pairs that will meet within the next substep (speculative contacts).
 #include "street_engine.h"
 
 #include "../physical/pair_friction.h"
@@ -29,9 +29,9 @@ using broadphase::Pair;
 namespace {
 
 constexpr int kPairChunk = 2048; // active balls a worker searches at a time
-// Pairs are listed within 2 r + a skin of r/2: a pass that pushes a ball into a neighbour it
+// Pairs are listed within 2 r + a skin of r: a pass that pushes a ball into a neighbour it
 // did not touch after the flight still finds that pair in the list, and so does a pair that
-// will touch within the next substep (two balls close by at most r/2 in one).
+// will touch within the next substep (two balls close by at most r in one).
 constexpr double kSkin = 1.0;
 constexpr std::uint32_t kEnd = 0xffffffffu; // the end of a column's list
 
