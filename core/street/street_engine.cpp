@@ -15,7 +15,7 @@ namespace {
 constexpr double kMaxTravel = 1.0; // of r per substep (point 1)
 constexpr int kMaxSubsteps = 4096;
 constexpr int kFlightChunk = 1024; // balls a worker flies at a time
-constexpr int kMaxPairPasses = 4;  // over the contacts of a substep
+constexpr int kMaxPairPasses = 8;  // over the contacts of a substep
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 } // namespace
@@ -66,6 +66,7 @@ void Engine::load(const State& s)
         maxSpeed2 = std::max(maxSpeed2, b.v.squaredNorm());
     }
     maxSpeed_ = std::sqrt(maxSpeed2);
+    covered_ = 0.0; // no contact has looked ahead from this state yet
 }
 
 void Engine::store(State& s) const
@@ -105,9 +106,36 @@ void Engine::step()
         impacts_ += count;
 }
 
+void Engine::contacts(double h)
+{
+    if (active_.size() < 2)
+        return;
+    buildCells();
+    pool_->forEach(static_cast<int>(pairs_.size()), [&](int chunk, int) { findPairs(chunk); });
+    // Gauss-Seidel passes over the same pairs, each seeing the last one's results: what one
+    // contact pushes into another, or into the street (settle), the next pass parts, until no
+    // listed pair overlaps by more than 1e-4 r and a pass turns none (a pair that an impulse
+    // turned towards another is seen again). A pile keeps what the passes leave (at most a few
+    // thousandths of r) for the next substep.
+    PassResult pass{kInfinity, 1};
+    for (int k = 0; k < kMaxPairPasses && (pass.overlap > 1e-4 * settings_.radius || pass.turned > 0); ++k) {
+        pass = resolvePairs(workerImpacts_[0], h);
+        for (int i : active_)
+            if (touched_[static_cast<std::size_t>(i)] != 0) {
+                touched_[static_cast<std::size_t>(i)] = 0;
+                settle(i, workerImpacts_[0]);
+            }
+    }
+    covered_ = h;
+}
+
 void Engine::substep(double h)
 {
     std::fill(workerMaxSpeed2_.begin(), workerMaxSpeed2_.end(), 0.0);
+    // The contacts of the last substep looked ahead by its length: a longer substep (a state
+    // just loaded, or slower balls) looks ahead again first, so no pair meets unseen.
+    if (h > covered_)
+        contacts(h);
     const int count = static_cast<int>(active_.size());
     pool_->forEach((count + kFlightChunk - 1) / kFlightChunk, [&](int chunk, int worker) {
         const int end = std::min(count, (chunk + 1) * kFlightChunk);
@@ -115,24 +143,7 @@ void Engine::substep(double h)
         for (int k = chunk * kFlightChunk; k < end; ++k)
             fly(active_[static_cast<std::size_t>(k)], h, impacts);
     });
-    if (count > 1) {
-        buildCells();
-        pool_->forEach(static_cast<int>(pairs_.size()), [&](int chunk, int) { findPairs(chunk); });
-        // Gauss-Seidel passes over the same pairs, each seeing the last one's results: what
-        // one contact pushes into another, or into the street (settle), the next pass parts,
-        // until no listed pair overlaps by more than 1e-4 r and a pass turns none (a pair that an
-        // impulse turned towards another is seen again). A pile keeps what four passes leave (at
-        // most a few thousandths of r) for the next substep.
-        PassResult pass{kInfinity, 1};
-        for (int k = 0; k < kMaxPairPasses && (pass.overlap > 1e-4 * settings_.radius || pass.turned > 0); ++k) {
-            pass = resolvePairs(workerImpacts_[0], h);
-            for (int i : active_)
-                if (touched_[static_cast<std::size_t>(i)] != 0) {
-                    touched_[static_cast<std::size_t>(i)] = 0;
-                    settle(i, workerImpacts_[0]);
-                }
-        }
-    }
+    contacts(h);
     double maxSpeed2 = 0.0;
     for (int i : active_)
         maxSpeed2 = std::max(maxSpeed2, balls_[static_cast<std::size_t>(i)].v.squaredNorm());

@@ -88,6 +88,8 @@ private:
         Eigen::Vector3d p, v, w;
     };
     void substep(double h);
+    // The contact phase (street_pairs.cpp): pairs found, then the passes, looking ahead by h.
+    void contacts(double h);
     void fly(int i, double h, long long& impacts);
     void settle(int i, long long& impacts);
     void findSupport(int i);
@@ -126,6 +128,7 @@ private:
     std::vector<long long> workerImpacts_;
     long long impacts_ = 0;
     double maxSpeed_ = 0.0;
+    double covered_ = 0.0; // how far ahead the last contact phase looked for pairs that meet
 };
 
 std::unique_ptr<Simulation> makeStreet(const RunSpec& spec, double dt);
