@@ -360,6 +360,51 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "steps: %1 is outside [1, %2]"),
     QT_TRANSLATE_NOOP("core", "compare with %1: %2"),
     QT_TRANSLATE_NOOP("core", "compare with %1: the two runs do not start at the same time with the same balls"),
+    // Stage 5, the street.
+    QT_TRANSLATE_NOOP("core", "\"Originally gravity, slope and rotation were to give the balls their initial speed and "
+                              "direction.\" Here the balls start almost at rest (speed) above the top block."),
+    QT_TRANSLATE_NOOP(
+        "core", "\"The basic idea was that the balls would bounce down a street like the picture from Sony's advert; "
+                "the simulation was done in a simplified environment, a box, to establish that the basic functions "
+                "work.\" The report's rules have no slope, kerb or crossing: this stage is the physical model's."),
+    QT_TRANSLATE_NOOP("core", "3.1, Figure 1"),
+    QT_TRANSLATE_NOOP("core", "Balls down a steep street"),
+    QT_TRANSLATE_NOOP("core", "St1"),
+    QT_TRANSLATE_NOOP("core", "St1-St2"),
+    QT_TRANSLATE_NOOP("core", "St4"),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's basic idea: balls bouncing down a steep street, as in Sony's advert, set going by "
+                "gravity, slope and rotation. A hopper above the top releases them; they roll, slide and jump down the "
+                "blocks, over the flat crossings, between kerbs and house fronts, and leave at the foot. The report "
+                "built the box to test its functions and never reached the street, so only the physical model has it."),
+    QT_TRANSLATE_NOOP("core", "a ball rolling without slipping down a block"),
+    QT_TRANSLATE_NOOP("core", "a ball sliding down a block, its spin growing"),
+    QT_TRANSLATE_NOOP("core", "a ball that leaves a crossing's edge flies as a projectile"),
+    QT_TRANSLATE_NOOP("core",
+                      "an impact whose rebound would rise less than this ends in contact: the ball rolls or slides on"),
+    QT_TRANSLATE_NOOP("core", "ball radius (a superball: 3 cm)"),
+    QT_TRANSLATE_NOOP("core", "cars: %1 do not fit along these blocks; they hold at most %2"),
+    QT_TRANSLATE_NOOP("core", "cars: a roadway of %1 m is too narrow for parked cars"),
+    QT_TRANSLATE_NOOP("core", "deg"),
+    QT_TRANSLATE_NOOP("core", "eq 2.3, St5"),
+    QT_TRANSLATE_NOOP("core", "every impact, with the street or a ball"),
+    QT_TRANSLATE_NOOP("core", "friction holds a ball set down on a block: it rolls (St1)"),
+    QT_TRANSLATE_NOOP("core", "height of the kerbs: the sidewalks stand this far above the road"),
+    QT_TRANSLATE_NOOP("core", "it lands when its centre is r from the road's plane: the earliest root"),
+    QT_TRANSLATE_NOOP("core", "length of a block along the road"),
+    QT_TRANSLATE_NOOP("core",
+                      "length of each flat crossing (the top one too); the flood leaves its lower edge as projectiles"),
+    QT_TRANSLATE_NOOP("core", "number of balls released from the hopper above the top"),
+    QT_TRANSLATE_NOOP("core", "parked cars (boxes) along the kerbs, spread over the blocks"),
+    QT_TRANSLATE_NOOP("core", "restitution of every impact, with the street and between balls (a superball: 0.8-0.9)"),
+    QT_TRANSLATE_NOOP("core", "road blocks, with a flat crossing between two"),
+    QT_TRANSLATE_NOOP("core", "roadway between the kerbs"),
+    QT_TRANSLATE_NOOP("core", "seed of the start positions and velocities"),
+    QT_TRANSLATE_NOOP("core", "slope of every block (17 deg: a 31 % grade, San Francisco's steepest)"),
+    QT_TRANSLATE_NOOP("core",
+                      "start velocities: each component uniform in [-speed, speed] (gravity and slope do the rest)"),
+    QT_TRANSLATE_NOOP("core", "width of each sidewalk, between kerb and house fronts"),
+    QT_TRANSLATE_NOOP("core", "width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)"),
 };
 
 } // namespace

@@ -307,6 +307,10 @@ QString ChartPanel::chartName(ChartKind kind)
         return tr("Difference");
     case ChartKind::Spin:
         return tr("Spin");
+    case ChartKind::FootRate:
+        return tr("Foot rate");
+    case ChartKind::Speeds:
+        return tr("Speeds");
     }
     return {};
 }
