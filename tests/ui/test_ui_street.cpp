@@ -4,6 +4,7 @@
 // drawn as road, crossings, houses and cars, its camera shots, the flood's front, the
 // report model greyed out with its reason, and the navigator's equations with numbers.
 #include "core/street/street_census.h"
+#include "ui/charts/chart_data_csv.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/charts/street_sample.h"
@@ -19,6 +20,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <sstream>
 
 using namespace ab;
 using namespace ab::ui;
@@ -132,6 +134,32 @@ private slots:
         QCOMPARE(track.pastFoot(0).size(), track.t().size());
         for (std::size_t i = 0; i < track.t().size(); ++i)
             QCOMPARE(track.pastFoot(0)[i], track.t()[i]);
+    }
+
+    void chartDataCsvCarriesTheStreetsCountsAndSpeeds()
+    {
+        MotionTrack track;
+        StreetSample sample;
+        sample.pastFoot = {7, 3, 1, 0, 0};
+        sample.speed = {0.5, 2.0, 6.5, 11.25};
+        track.add(0, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                  ConservationSample{}, sample);
+        ChartData data;
+        data.run = &track;
+        data.streetBlocks = 3;
+        std::ostringstream out;
+        writeChartCsv(out, data);
+        std::istringstream lines(out.str());
+        std::string header, row;
+        std::getline(lines, header);
+        std::getline(lines, row);
+        QVERIFY(header.ends_with(",past_foot_1 [balls],past_foot_2 [balls],past_foot_3 [balls],speed_p10 [m/s],"
+                                 "speed_median [m/s],speed_p90 [m/s],speed_max [m/s]"));
+        QVERIFY(row.ends_with(",7,3,1,0.5,2,6.5,11.25"));
+        data.streetBlocks = 0; // another stage: no street columns
+        std::ostringstream plain;
+        writeChartCsv(plain, data);
+        QVERIFY(plain.str().find("past_foot") == std::string::npos);
     }
 
     void streetChartsBelongToTheStreetOnly()
