@@ -48,10 +48,10 @@ const std::vector<std::string_view>& refusalTexts()
 {
     using namespace refusal;
     static const std::vector<std::string_view> texts{
-        notANumber,    tooSmallForDouble, tooLargeForDouble, notFinite,       valueNotFinite, notWhole,
-        wholeTooLarge, beyondExact,       notVector,         notFiniteVector, outsideRange,   componentOutsideRange,
-        outsideBox,    noRoomInBox,       stepNotPositive,   stepsOutside,    compareWith,    compareStart,
-        streetTooNarrow, carsDoNotFit, carsTooWide};
+        notANumber,      tooSmallForDouble, tooLargeForDouble, notFinite,       valueNotFinite, notWhole,
+        wholeTooLarge,   beyondExact,       notVector,         notFiniteVector, outsideRange,   componentOutsideRange,
+        outsideBox,      noRoomInBox,       stepNotPositive,   stepsOutside,    compareWith,    compareStart,
+        streetTooNarrow, carsDoNotFit,      carsTooWide};
     return texts;
 }
 

@@ -85,6 +85,9 @@ std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec)
         if (dt != 1.0)
             throw InputError("--dt: the report's many-balls model advances one frame per step; its step is 1 frame");
         return report::makeManyBalls(spec);
+    case SceneId::Street:
+        throw InputError("--model: the report's rules stop at the box (report 3.1); the street is the physical "
+                         "model's: use --model physical");
     }
     throw std::logic_error("scene without a report model");
 }

@@ -3,7 +3,9 @@
 // (core/physical/many_balls_physical.h): `--repeats` runs from the workload's start, each
 // 100 warm-up steps then `--steps` timed steps; the median run per ball and step.
 // `--set NAME=VALUE` sets the rough balls' constants of the physical model (mu, beta,
-// inertia, spin: docs/spin.md) on the same workload.
+// inertia, spin: docs/spin.md) on the same workload. `--scene street` times the street
+// (core/street/street_engine.h) with its defaults from the hopper's release: 100 warm-up
+// steps (1.7 s: the balls have landed and roll down block 1), then the timed steps.
 #include "commands.h"
 
 #include "bench_protocol.h"
@@ -11,6 +13,7 @@
 
 #include "../../core/io/atomic_file.h"
 #include "../../core/physical/many_balls_physical.h"
+#include "../../core/street/street_engine.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -25,8 +28,10 @@ constexpr int kWarmupSteps = 100;
 constexpr int kAllPairsMax = 20'000;       // largest N the O(N^2) search is run for on request
 constexpr int kAllPairsDefaultMax = 1'000; // ... and when no broadphase is named
 const std::vector<int> kDefaultBalls{150, 1'000, 10'000, 100'000, 1'000'000};
+const std::vector<int> kDefaultStreetBalls{10'000, 50'000, 250'000};
 
 struct Case {
+    SceneId scene;
     int balls;
     ModelKind model;
     Broadphase broadphase;
@@ -42,6 +47,7 @@ struct Row {
 
 struct Options {
     std::vector<int> balls;
+    std::vector<SceneId> scenes;
     std::optional<Broadphase> broadphase;
     ModelKind model = ModelKind::Physical;
     int threads = 1;
@@ -55,9 +61,23 @@ struct Options {
 constexpr const char* kSettable[] = {"mu", "beta", "inertia", "spin"};
 
 // Checks each --set against many-balls' table (range, form) and the keys bench takes.
-std::vector<std::string> readAssignments(Parsed& args, ModelKind model)
+std::vector<std::string> readAssignments(Parsed& args, ModelKind model, const std::vector<SceneId>& scenes)
 {
     std::vector<std::string> out = args.options("set");
+    if (std::find(scenes.begin(), scenes.end(), SceneId::Street) != scenes.end()) {
+        if (scenes.size() > 1 && !out.empty())
+            throw InputError("--set: give it with one --scene (its parameters differ)");
+        RunSpec street(SceneId::Street);
+        for (const std::string& a : out) {
+            std::string key = a.substr(0, a.find('='));
+            key.erase(0, key.find_first_not_of(" \t"));
+            key.erase(key.find_last_not_of(" \t") + 1);
+            if (key == "n")
+                throw InputError("--set " + printableInput(a) + ": the street's ball count is --balls");
+            street.params.parseAssignment(a); // names an unknown parameter or a bad value
+        }
+        return out;
+    }
     RunSpec probe(SceneId::ManyBalls);
     probe.model = ModelKind::Physical;
     for (const std::string& a : out) {
@@ -91,6 +111,18 @@ Options readOptions(Parsed& args)
         if (!o.broadphase)
             throwUnknownValue("--broadphase", *text, valueWords(Values::Broadphase));
     }
+    for (const std::string& text : args.options("scene")) {
+        const SceneInfo* scene = findScene(text);
+        if (!scene || (scene->id != SceneId::ManyBalls && scene->id != SceneId::Street))
+            throw InputError("--scene: bench times many-balls and street, not '" + printableInput(text) + "'");
+        if (std::find(o.scenes.begin(), o.scenes.end(), scene->id) == o.scenes.end())
+            o.scenes.push_back(scene->id);
+    }
+    if (o.scenes.empty())
+        o.scenes = {SceneId::ManyBalls};
+    const bool street = std::find(o.scenes.begin(), o.scenes.end(), SceneId::Street) != o.scenes.end();
+    if (args.options("balls").empty() && o.scenes == std::vector<SceneId>{SceneId::Street})
+        o.balls = kDefaultStreetBalls;
     if (const auto text = args.option("model")) {
         const auto model = parseModel(*text);
         if (!model)
@@ -102,7 +134,9 @@ Options readOptions(Parsed& args)
     o.repeats = static_cast<int>(args.integer("repeats", 1, 99).value_or(o.repeats));
     o.out = args.option("out");
     o.markdown = args.option("markdown");
-    o.assignments = readAssignments(args, o.model);
+    o.assignments = readAssignments(args, o.model, o.scenes);
+    if (street && (o.model != ModelKind::Physical || o.broadphase == Broadphase::AllPairs))
+        throw InputError("--scene street: the street has the physical model and the grid only");
     if (o.model == ModelKind::Report && o.threads > 1)
         throw InputError("--threads: the report model updates its balls one after another on one thread; use "
                          "--threads 1 with --model report");
@@ -121,22 +155,53 @@ Options readOptions(Parsed& args)
 std::vector<Case> casesOf(const Options& o, std::ostream& err)
 {
     std::vector<Case> cases;
-    for (int n : o.balls) {
-        if (!o.broadphase || *o.broadphase == Broadphase::Grid)
-            cases.push_back({n, o.model, Broadphase::Grid, o.threads});
-        if (o.broadphase == Broadphase::AllPairs)
-            cases.push_back({n, o.model, Broadphase::AllPairs, o.threads});
-        else if (!o.broadphase && n <= kAllPairsDefaultMax)
-            cases.push_back({n, o.model, Broadphase::AllPairs, o.threads});
-        else if (!o.broadphase)
-            err << "bench: all-pairs skipped for " << n << " balls (O(N^2); at most " << kAllPairsDefaultMax
-                << " by default, " << kAllPairsMax << " with --broadphase all-pairs)\n";
-    }
+    for (int n : o.balls)
+        for (SceneId scene : o.scenes) {
+            if (scene == SceneId::Street) {
+                cases.push_back({scene, n, ModelKind::Physical, Broadphase::Grid, o.threads});
+                continue;
+            }
+            if (!o.broadphase || *o.broadphase == Broadphase::Grid)
+                cases.push_back({scene, n, o.model, Broadphase::Grid, o.threads});
+            if (o.broadphase == Broadphase::AllPairs)
+                cases.push_back({scene, n, o.model, Broadphase::AllPairs, o.threads});
+            else if (!o.broadphase && n <= kAllPairsDefaultMax)
+                cases.push_back({scene, n, o.model, Broadphase::AllPairs, o.threads});
+            else if (!o.broadphase)
+                err << "bench: all-pairs skipped for " << n << " balls (O(N^2); at most " << kAllPairsDefaultMax
+                    << " by default, " << kAllPairsMax << " with --broadphase all-pairs)\n";
+        }
     return cases;
+}
+
+// The street from its hopper's release, its defaults but n and the --set values; the engine
+// steps in place.
+Row measureStreet(const Case& c, const Options& o)
+{
+    RunSpec spec(SceneId::Street);
+    spec.params.set("n", Eigen::Vector3d(c.balls, 0.0, 0.0));
+    for (const std::string& a : o.assignments)
+        spec.params.parseAssignment(a);
+    spec.threads = c.threads;
+    sceneInfo(SceneId::Street).crossCheck(spec.params);
+    const double dt = defaultDt(SceneId::Street, ModelKind::Physical);
+    const street::Layout layout = street::Layout::fromParams(spec.params);
+    const street::Settings settings = street::Settings::fromSpec(spec, dt);
+    const State start = street::hopperStart(layout, settings);
+    street::Engine engine(layout, settings);
+    Row row{c, {}, std::nullopt, 0.0};
+    row.timing = timeBallSteps(
+        c.balls, kWarmupSteps, o.steps, o.repeats, [&] { engine.load(start); }, [&] { engine.step(); },
+        throwIfInterrupted);
+    row.engineMiB = static_cast<double>(engine.bytes()) / (1024.0 * 1024.0);
+    row.peakMiB = peakResidentMiB();
+    return row;
 }
 
 Row measure(const Case& c, const Options& o)
 {
+    if (c.scene == SceneId::Street)
+        return measureStreet(c, o);
     RunSpec spec = physical::benchmarkSpec(c.balls, c.model, c.broadphase, c.threads);
     for (const std::string& a : o.assignments)
         spec.params.parseAssignment(a);
@@ -176,24 +241,27 @@ std::string number(double x, const char* format)
 void writeCsv(std::ostream& out, const std::vector<Row>& rows)
 {
     out << "balls,broadphase,threads,ns_per_ball_step,steps_per_second,model,cpu_ns_per_ball_step,engine_mib,"
-           "peak_rss_mib\n";
+           "peak_rss_mib,scene\n";
     for (const Row& r : rows)
         out << r.c.balls << "," << broadphaseKey(r.c.broadphase) << "," << r.c.threads << ","
             << number(r.timing.nsPerBallStep, "%.4g") << "," << number(r.timing.stepsPerSecond, "%.4g") << ","
             << modelKey(r.c.model) << "," << number(r.timing.cpuNsPerBallStep, "%.4g") << ","
-            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "") << "," << number(r.peakMiB, "%.1f") << "\n";
+            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "") << "," << number(r.peakMiB, "%.1f") << ","
+            << sceneInfo(r.c.scene).key << "\n";
 }
 
 void writeMarkdown(std::ostream& out, const std::vector<Row>& rows, const Options& o)
 {
-    out << "| balls | model | broadphase | threads | ns per ball-step | steps per second | CPU ns per ball-step | "
+    out << "| scene | balls | model | broadphase | threads | ns per ball-step | steps per second | CPU ns per "
+           "ball-step | "
            "engine MiB | peak RSS MiB |\n"
-           "| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+           "| --- | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const Row& r : rows)
-        out << "| " << r.c.balls << " | " << modelKey(r.c.model) << " | " << broadphaseKey(r.c.broadphase) << " | "
-            << r.c.threads << " | " << number(r.timing.nsPerBallStep, "%.1f") << " | "
-            << number(r.timing.stepsPerSecond, "%.4g") << " | " << number(r.timing.cpuNsPerBallStep, "%.1f") << " | "
-            << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "-") << " | " << number(r.peakMiB, "%.0f") << " |\n";
+        out << "| " << sceneInfo(r.c.scene).key << " | " << r.c.balls << " | " << modelKey(r.c.model) << " | "
+            << broadphaseKey(r.c.broadphase) << " | " << r.c.threads << " | " << number(r.timing.nsPerBallStep, "%.1f")
+            << " | " << number(r.timing.stepsPerSecond, "%.4g") << " | " << number(r.timing.cpuNsPerBallStep, "%.1f")
+            << " | " << (r.engineMiB ? number(*r.engineMiB, "%.1f") : "-") << " | " << number(r.peakMiB, "%.0f")
+            << " |\n";
     out << "\n"
         << "The median of " << o.repeats << " runs from the start, each " << kWarmupSteps << " warm-up steps then "
         << o.steps
@@ -218,8 +286,9 @@ int benchCommand(Parsed& args, std::ostream& out, std::ostream& err)
         rows.push_back(measure(c, o));
         const Row& r = rows.back();
         if (o.out) // progress; the CSV goes to the file
-            out << r.c.balls << " balls, " << modelKey(r.c.model) << ", " << broadphaseKey(r.c.broadphase) << ", "
-                << r.c.threads << " thread(s): " << number(r.timing.nsPerBallStep, "%.1f") << " ns per ball-step, "
+            out << sceneInfo(r.c.scene).key << ", " << r.c.balls << " balls, " << modelKey(r.c.model) << ", "
+                << broadphaseKey(r.c.broadphase) << ", " << r.c.threads
+                << " thread(s): " << number(r.timing.nsPerBallStep, "%.1f") << " ns per ball-step, "
                 << number(r.timing.stepsPerSecond, "%.4g") << " steps per second, "
                 << number(r.timing.cpuNsPerBallStep, "%.1f") << " ns CPU" << std::endl;
     }

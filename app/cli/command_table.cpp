@@ -161,10 +161,12 @@ CommandSpec benchCommandSpec()
             "",
             false,
             V::None,
-            "cost per ball-step of many-balls",
-            "Times the many-balls scene on the benchmark workload: the median of several runs per ball count, "
-            "as CSV.",
+            "cost per ball-step of many-balls and the street",
+            "Times the many-balls scene on the benchmark workload, or the street from its hopper's release: the "
+            "median of several runs per ball count, as CSV.",
             {
+                {"scene", "many-balls|street", "the scene timed; repeat for both, each ball count of each in turn",
+                 "many-balls", true, V::Scene},
                 {"balls", "N", "a ball count to time, 1 to 4000000; repeat for several",
                  "150, 1000, 10000, 100000 and 1000000", true},
                 {"threads", "T", "threads of the physical model, 1 to 256", "1"},
@@ -176,8 +178,10 @@ CommandSpec benchCommandSpec()
                 {"out", "FILE.csv", "write the CSV to FILE.csv (progress on standard output)", "standard output", false,
                  V::File},
                 {"markdown", "FILE.md", "also write the table as Markdown", "", false, V::File},
-                {"set", "NAME=VALUE", "a constant of rough balls: mu, beta, inertia or spin (the physical model)",
-                 "smooth balls", true, V::Assignment},
+                {"set", "NAME=VALUE",
+                 "many-balls: a constant of rough balls, mu, beta, inertia or spin (the physical model); street: any "
+                 "of its parameters but n",
+                 "smooth balls; the street's defaults", true, V::Assignment},
             },
             benchCommand};
 }

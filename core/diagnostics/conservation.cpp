@@ -13,7 +13,8 @@ namespace {
 // and 4), else one length unit (stages 1 and 2 treat the ball as a point).
 double ballRadius(const RunSpec& spec)
 {
-    const bool hasRadius = spec.scene == SceneId::TwoBalls || spec.scene == SceneId::ManyBalls;
+    const bool hasRadius =
+        spec.scene == SceneId::TwoBalls || spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street;
     return hasRadius ? spec.params.real("r") : 1.0;
 }
 
@@ -45,6 +46,8 @@ bool ballsTurn(const RunSpec& spec)
         return roughContacts(v) || nonZeroVector(v, "w1") || nonZeroVector(v, "w2");
     case SceneId::ManyBalls:
         return roughContacts(v) || v.real("spin") > 0.0;
+    case SceneId::Street:
+        return roughContacts(v);
     }
     return false;
 }
@@ -53,7 +56,8 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
 {
     const RunSpec& spec = sim.spec();
     g_ = spec.params.real("g");
-    // Stage 4's box is centred at the origin (Appendix D): its floor is y = -L/2.
+    // Stage 4's box is centred at the origin (Appendix D): its floor is y = -L/2. The
+    // street's foot is y = 0 (street_layout.h).
     floor_ = spec.scene == SceneId::ManyBalls ? -spec.params.real("box") / 2.0 : 0.0;
     world_ = physical::worldOf(sim);
     turns_ = ballsTurn(spec);
@@ -63,7 +67,8 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
                physical::contactLawOf(spec) != physical::ContactLaw::Impulse) {
         spring_ = physical::springFloorFor(spec);
         mass_ = {spec.params.real("m")};
-    } else if (spec.model == ModelKind::Physical && spec.scene == SceneId::ManyBalls) {
+    } else if (spec.model == ModelKind::Physical &&
+               (spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street)) {
         spinInertia_ = spec.params.real("inertia") * spec.params.real("r") * spec.params.real("r"); // I/m = q r^2
     }
     // "Moving": faster than the speed that would lift the ball by h = r/100 against

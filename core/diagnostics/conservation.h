@@ -9,8 +9,8 @@
 //     many-balls have equal masses: unit mass, so the values are per unit mass.
 //     A turning ball's rotational energy I |w|^2 / 2 counts as kinetic (stages 1-3 and
 //     many-balls, physical model).
-//  2. Potential energy is m g (y - floor): the floor is y = 0 (stages 1-3) or the box's
-//     bottom face y = -L/2 (stage 4), as the 3D view draws it.
+//  2. Potential energy is m g (y - floor): the floor is y = 0 (stages 1-3, and the street's
+//     foot) or the box's bottom face y = -L/2 (stage 4), as the 3D view draws it.
 //  3. Impacts are counted by the models in State::impacts (many-balls, both models).
 #pragma once
 

@@ -53,10 +53,14 @@ HealthCheck::Impl::Impl(const Simulation& s, const State& start)
         mass = world->mass;
         spinInertia = world->inertia * world->spinRadius * world->spinRadius;
         lever = world->spinRadius;
-    } else if (spec.scene == SceneId::ManyBalls && !report) {
+    } else if ((spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street) && !report) {
         // The many-balls engine's equal balls, per unit mass: I = q r^2 (docs/spin.md).
         spinInertia = spec.params.real("inertia") * r * r;
         lever = r;
+    }
+    if (spec.scene == SceneId::Street) {
+        streetLayout.emplace(street::Layout::fromParams(spec.params));
+        overlapAllowance = 1e-6;
     }
     setUpAngularMomentum();
     e0 = energy(start);
@@ -184,6 +188,8 @@ std::string HealthCheck::Impl::energyCause(Finding& f) const
     case SceneId::ManyBalls:
         f.rule = ReportRule::PushAndWallGravity;
         return " (Appendix D's push of one radius along the normal and its extra gravity at a side wall)";
+    case SceneId::Street: // the street has no report model
+        break;
     }
     return {};
 }
@@ -201,6 +207,8 @@ Health HealthCheck::Impl::check(const State& b, const State& a)
     for (int i = 0; i < a.size(); ++i) {
         checkPlace(b, a, i);
         checkStuck(b, a, i);
+        if (streetLayout)
+            checkStreet(a, i);
     }
     checkEnergy(a, e);
     checkPairs(b, a);

@@ -27,7 +27,7 @@ void HealthCheck::Impl::checkPair(const State& b, const State& a, int i, int j)
     const Eigen::Vector3d d0 = b.p.col(i) - b.p.col(j);
     const Eigen::Vector3d d1 = a.p.col(i) - a.p.col(j);
     const double overlap = contact - d1.norm();
-    if (overlap > 1e-9 * r) {
+    if (overlap > overlapAllowance * r) {
         fig.maxOverlap = std::max(fig.maxOverlap.value_or(0.0), overlap);
         raise(Kind::Overlap, Health::Warning, [&](std::string& what, std::string& advice, Finding& f) {
             f.kind = FindingKind::Overlap;
@@ -138,7 +138,10 @@ void HealthCheck::Impl::checkPairs(const State& b, const State& a)
     // Many balls: overlaps on a grid of cells 2r wide; every 10th step beyond 1e5.
     if (n > sampledAbove && pairChecks++ % 10 != 0)
         return;
-    gridOverlaps(b, a);
+    if (streetLayout)
+        hashedOverlaps(b, a);
+    else
+        gridOverlaps(b, a);
 }
 
 void HealthCheck::Impl::gridOverlaps(const State& b, const State& a)

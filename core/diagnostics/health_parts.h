@@ -8,6 +8,7 @@
 #include "health.h"
 
 #include "../physical/spring_contact.h"
+#include "../street/street_census.h"
 
 #include <Eigen/Core>
 
@@ -101,6 +102,11 @@ struct HealthCheck::Impl {
     bool angularChecked = false; // the scene's balls turn and no drag acts on them
     double lever = 0.0;          // r, the lever arm of friction
     std::vector<char> nearBall;
+    std::optional<street::Layout> streetLayout; // stage 5's boxes (health_street.cpp)
+    // Two balls overlapping by more than this times r is a finding. The street resolves its
+    // contacts in Gauss-Seidel passes down to 1e-7 r (street_pairs.cpp), and what a pass pushes
+    // into a pair it had not listed waits for the next substep; elsewhere round-off only.
+    double overlapAllowance = 1e-9;
 
     double potential(double y) const { return spring ? spring->potential(y) : g * (y - walls.lo.y()); }
 
@@ -182,6 +188,11 @@ struct HealthCheck::Impl {
     void checkPairs(const State& b, const State& a);
 
     void gridOverlaps(const State& b, const State& a);
+
+    // Stage 5 (health_street.cpp): a ball inside one of the street's boxes, and the overlaps
+    // of many balls in a hashed grid.
+    void checkStreet(const State& a, int i);
+    void hashedOverlaps(const State& b, const State& a);
 
     // Angular momentum about the contact point at the floor, r n x v + q r^2 w per unit mass
     // (docs/spin.md S13, S4), for each ball that the step brought near the floor and kept

@@ -26,6 +26,8 @@ Walls wallsOf(const RunSpec& spec)
         const double limit = p.real("box") / 2.0 - p.real("r");
         return {{-limit, -limit, -limit}, {limit, infinity, limit}};
     }
+    case SceneId::Street: // its foot is y = 0, the lowest the road goes; its boxes are checkStreet's
+        return {{-infinity, 0.0, -infinity}, {infinity, infinity, infinity}};
     }
     throw std::logic_error("scene without walls");
 }

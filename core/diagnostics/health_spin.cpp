@@ -31,7 +31,9 @@ double travelOf(const State& b, const State& a, int i, double dt, double g)
 void HealthCheck::Impl::setUpAngularMomentum()
 {
     const physical::World* world = physical::worldOf(sim);
-    angularChecked = !report && !spring && spinInertia > 0.0 && lever > 0.0 && !(world && world->hasDrag());
+    // The street's faces are not the floor this check is about (health_street.cpp checks it).
+    angularChecked = !report && !spring && spinInertia > 0.0 && lever > 0.0 && !(world && world->hasDrag()) &&
+                     spec.scene != SceneId::Street;
     sideLo = walls.lo;
     sideHi = walls.hi;
     sideLo.y() = -infinity; // the floor is the contact this check is about

@@ -6,6 +6,7 @@
 #include "many_balls_physical.h"
 
 #include "many_balls_walls.h"
+#include "pair_friction.h"
 #include "worker_pool.h"
 
 #include <algorithm>
@@ -18,33 +19,6 @@ using broadphase::Pair;
 namespace {
 
 constexpr double kTouching = 1.0 + 1e-6; // centres this close, relative to 2r, touch
-
-// The two balls of a contact, a and b (the normal n from a to b), unit masses.
-struct PairVelocities {
-    Eigen::Vector3d va, vb, wa, wb;
-};
-
-// Walton's impulse between two equal rough balls (docs/spin.md S11-S12), per unit mass,
-// the reduced mass 1/2: the slip at the contact point g = v_b - v_a - r (w_a + w_b) x n,
-// its part along the contact plane, the factor c of S9-S10 (impacts.h) with pn the normal
-// impulse per unit reduced mass (1 + e) |u|; P_t = -c q g / 2 on b and -P_t on a, so the
-// momentum v_a + v_b is kept, and both spins change by c n x g / (2 r): equally, in the
-// same sense.
-void waltonBetween(PairVelocities& p, const Eigen::Vector3d& n, double pn, const manyballs::Friction& f)
-{
-    Eigen::Vector3d g = p.vb - p.va - f.r * (p.wa + p.wb).cross(n);
-    g -= g.dot(n) * n;
-    const double slip = g.norm();
-    if (!(slip > 0.0))
-        return;
-    const double c = waltonFactor(f.q, f.beta, slip, f.mu * pn);
-    const Eigen::Vector3d tangential = 0.5 * c * f.q * g; // -P_t on b    (S11)
-    p.vb -= tangential;
-    p.va += tangential;
-    const Eigen::Vector3d turn = 0.5 * c / f.r * n.cross(g); // -r n x (+-P_t) / I   (S12)
-    p.wa += turn;
-    p.wb += turn;
-}
 
 } // namespace
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "physical_models.h"
 
+#include "../street/street_engine.h"
+
 namespace ab::physical {
 
 std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec, double dt)
@@ -14,6 +16,8 @@ std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec, double dt)
         return makeTwoBalls(spec, dt);
     case SceneId::ManyBalls:
         return makeManyBalls(spec, dt);
+    case SceneId::Street:
+        return street::makeStreet(spec, dt);
     }
     throw std::logic_error("scene without a physical model");
 }

@@ -221,6 +221,9 @@ std::unique_ptr<Reference> makeReference(const RunSpec& spec, double horizon)
     case SceneId::ManyBalls:
         throw InputError("many-balls: there is no closed form for many colliding balls; use bounce1d, box3d or "
                          "two-balls");
+    case SceneId::Street:
+        throw InputError("street: there is no closed form for a flood of balls down a street; use bounce1d, box3d "
+                         "or two-balls");
     }
     throw std::logic_error("scene without a reference");
 }

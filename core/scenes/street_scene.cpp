@@ -9,6 +9,12 @@ namespace ab::scenes {
 
 namespace {
 
+ParamSpec withDefault(ParamSpec spec, double value)
+{
+    spec.defaultValue = Eigen::Vector3d(value, 0.0, 0.0);
+    return spec;
+}
+
 std::vector<ParamSpec> streetParams()
 {
     return {
@@ -24,8 +30,8 @@ std::vector<ParamSpec> streetParams()
                       "length of each flat crossing (the top one too); the flood leaves its lower edge as projectiles",
                       PhysicalModel)),
         positive(real("width", "W", "m", 12.0, 0.0, 100.0, "3.1", "roadway between the kerbs", PhysicalModel)),
-        real("kerb", "h_k", "m", 0.15, 0.0, 2.0, "3.1", "height of the kerbs: the sidewalks stand this far above the road",
-             PhysicalModel),
+        real("kerb", "h_k", "m", 0.15, 0.0, 2.0, "3.1",
+             "height of the kerbs: the sidewalks stand this far above the road", PhysicalModel),
         real("sidewalk", "S", "m", 3.0, 0.0, 20.0, "3.1", "width of each sidewalk, between kerb and house fronts",
              PhysicalModel),
         integer("cars", "cars", 0, 0, 2000, "3.1", "parked cars (boxes) along the kerbs, spread over the blocks",
@@ -33,8 +39,8 @@ std::vector<ParamSpec> streetParams()
         real("g", "g", "m/s^2", 9.82, 0.0, 100.0, "St1", "magnitude of gravity (down is -y)", PhysicalModel),
         real("e", "e", "1", 0.8, 0.0, 1.0, "eq 2.3, St5",
              "restitution of every impact, with the street and between balls (a superball: 0.8-0.9)", PhysicalModel),
-        frictionParam(true),
-        betaParam(),
+        withDefault(frictionParam(true), 0.6), // superball rubber grips: the balls roll and spin
+        withDefault(betaParam(), 0.4),
         inertiaParam(),
         real("rest_height", "h_rest", "m", 0.001, 0.0, 10.0, "v_rest = sqrt(2 g h_rest)",
              "an impact whose rebound would rise less than this ends in contact: the ball rolls or slides on",
@@ -72,13 +78,11 @@ SceneInfo makeStreet()
     s.crossCheck = [](const ParamValues& v) {
         const double r = v.real("r");
         if (v.real("width") < 8.0 * r)
-            refuse(refusal::streetTooNarrow,
-                   {formatNumber(v.real("width")), formatNumber(r)});
+            refuse(refusal::streetTooNarrow, {formatNumber(v.real("width")), formatNumber(r)});
         const auto cars = static_cast<int>(v.integer("cars"));
         const int slots = street::Layout::carSlots(static_cast<int>(v.integer("blocks")), v.real("block_length"));
         if (cars > slots)
-            refuse(refusal::carsDoNotFit, {std::to_string(cars),
-                                                                                     std::to_string(slots)});
+            refuse(refusal::carsDoNotFit, {std::to_string(cars), std::to_string(slots)});
         if (cars > 0 && v.real("width") < 2.0 * street::kCarWidth + 16.0 * r)
             refuse(refusal::carsTooWide, {formatNumber(v.real("width"))});
     };

@@ -31,4 +31,9 @@ std::vector<CaseRow> spinEnergyDrift();
 std::vector<CaseRow> spinLargeMu();
 std::vector<CaseRow> spinBackspinWall();
 
+// The street (docs/street.md, street_cases.cpp).
+std::vector<CaseRow> streetElastic();
+std::vector<CaseRow> streetKerbCrossing();
+std::vector<CaseRow> streetAdvert();
+
 } // namespace ab::stability

@@ -489,6 +489,10 @@ const std::vector<StabilityCase>& stabilityCases()
          spinEnergyDrift},
         {"spin-large-mu", "rough balls with mu = 10: every contact sticks", spinLargeMu},
         {"spin-backspin-wall", "a fast ball with back-spin against a wall", spinBackspinWall},
+        {"street-elastic", "the street at 45 deg, mu = 0, e = beta = 1: energy kept to round-off", streetElastic},
+        {"street-kerb-crossing", "balls fast enough to cross a kerb or the road many times in one step",
+         streetKerbCrossing},
+        {"street-advert", "the advert's 250,000 balls down the street", streetAdvert},
     };
     return cases;
 }

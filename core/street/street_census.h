@@ -21,7 +21,10 @@ struct Census {
 
 // A ball has left the run once its centre is beyond the open foot; the engine keeps it there,
 // at rest, and every front end leaves it out.
-inline bool hasLeft(const Layout& layout, double x) { return x > layout.xFoot; }
+inline bool hasLeft(const Layout& layout, double x)
+{
+    return x > layout.xFoot;
+}
 
 Census census(const Layout& layout, const State& s);
 

@@ -20,49 +20,54 @@ constexpr double kBinWidth = 2.0;   // of the bins along x that list the items n
 
 Eigen::Vector3d Box::axis(int a) const
 {
-    const double c = std::cos(angle), s = std::sin(angle);
     if (a == 0)
-        return {c, s, 0.0};
+        return {cosA, sinA, 0.0};
     if (a == 1)
-        return {-s, c, 0.0};
+        return {-sinA, cosA, 0.0};
     return Eigen::Vector3d::UnitZ();
-}
-
-Eigen::Vector3d Box::toLocal(const Eigen::Vector3d& p) const
-{
-    const Eigen::Vector3d d = p - centre;
-    const double c = std::cos(angle), s = std::sin(angle);
-    return {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), d.z()}; // R^T d, R the turn by `angle` about z
-}
-
-Eigen::Vector3d Box::toWorld(const Eigen::Vector3d& local) const
-{
-    const double c = std::cos(angle), s = std::sin(angle);
-    return centre + Eigen::Vector3d(c * local.x() - s * local.y(), s * local.x() + c * local.y(), local.z());
 }
 
 Layout Layout::fromParams(const ParamValues& v)
 {
     return Layout(v.real("slope") * std::numbers::pi / 180.0, static_cast<int>(v.integer("blocks")),
                   v.real("block_length"), v.real("crossing"), v.real("width"), v.real("kerb"), v.real("sidewalk"),
-                  static_cast<int>(v.integer("cars")), v.real("r"));
+                  static_cast<int>(v.integer("cars")), v.real("r"), static_cast<int>(v.integer("n")));
 }
 
 Layout::Layout(double slopeRadians, int blocks_, double blockLength_, double crossing_, double width_, double kerb_,
-               double sidewalk_, int cars_, double radius_)
+               double sidewalk_, int cars_, double radius_, int balls)
     : slope(slopeRadians), blockLength(blockLength_), crossing(crossing_), width(width_), kerb(kerb_),
       sidewalk(sidewalk_), radius(radius_), blocks(blocks_), cars(cars_)
 {
-    build(cars_);
+    build(cars_, balls);
     // A ball moves at most r/4 in a substep (street_engine.cpp), so items within 2 m + 2 r of
     // its x are every item it can reach.
     bin(kBinWidth + 2.0 * radius);
 }
 
+namespace {
+
+// Parked cars stand in slots along each side of a block, kCarGap apart; block 1 keeps its first
+// 40 % (and a metre more) free for the hopper above it.
+double firstSlotFrom(int block, double blockLength)
+{
+    return block == 0 ? 0.4 * blockLength + 1.0 : 0.0;
+}
+
+int slotsPerSide(int block, double blockLength)
+{
+    const double room = blockLength - firstSlotFrom(block, blockLength) - kCarGap;
+    return std::max(0, static_cast<int>(std::floor(room / (kCarLength + kCarGap))));
+}
+
+} // namespace
+
 int Layout::carSlots(int blocks, double blockLength)
 {
-    const auto perSide = static_cast<int>(std::floor((blockLength - kCarGap) / (kCarLength + kCarGap)));
-    return 2 * blocks * std::max(perSide, 0);
+    int slots = 0;
+    for (int k = 0; k < blocks; ++k)
+        slots += 2 * slotsPerSide(k, blockLength);
+    return slots;
 }
 
 void Layout::addSegment(ItemKind kind, int segment, double x0, double y0, double length, double angle)
@@ -72,26 +77,44 @@ void Layout::addSegment(ItemKind kind, int segment, double x0, double y0, double
     const Eigen::Vector3d along(std::cos(angle), std::sin(angle), 0.0), up(-std::sin(angle), std::cos(angle), 0.0);
     const Eigen::Vector3d topMiddle = Eigen::Vector3d(x0, y0, 0.0) + 0.5 * length * along;
     const double across = 0.5 * width + sidewalk;
-    boxes.push_back({kind, segment, topMiddle - 0.5 * kGround * up, angle,
-                     Eigen::Vector3d(0.5 * length, 0.5 * kGround, across)});
+    boxes.push_back(
+        {kind, segment, topMiddle - 0.5 * kGround * up, angle, Eigen::Vector3d(0.5 * length, 0.5 * kGround, across)});
     if (sidewalk > 0.0)
         for (double side : {-1.0, 1.0}) {
             const double half = 0.5 * (kGround + kerb);
-            const Eigen::Vector3d centre = topMiddle + (kerb - half) * up +
-                                           Eigen::Vector3d(0.0, 0.0, side * (0.5 * width + 0.5 * sidewalk));
-            boxes.push_back({ItemKind::Sidewalk, segment, centre, angle,
-                             Eigen::Vector3d(0.5 * length, half, 0.5 * sidewalk)});
+            const Eigen::Vector3d centre =
+                topMiddle + (kerb - half) * up + Eigen::Vector3d(0.0, 0.0, side * (0.5 * width + 0.5 * sidewalk));
+            boxes.push_back(
+                {ItemKind::Sidewalk, segment, centre, angle, Eigen::Vector3d(0.5 * length, half, 0.5 * sidewalk)});
         }
 }
 
-void Layout::build(int carCount)
+void Layout::placeHopper(int balls)
+{
+    // Over the first part of block 1, min(0.2 m, r) in from the kerbs; sites 2.2 r apart, so that
+    // a jitter of up to 0.1 r each way keeps the centres more than 2 r apart.
+    const double run = blockLength * std::cos(slope);
+    hopper.x0 = std::min(1.0, 0.1 * run);
+    hopper.x1 = std::max(hopper.x0 + 2.2 * radius, std::min(0.4 * run, 30.0));
+    hopper.z0 = -0.5 * width + radius + std::min(0.2, radius);
+    hopper.z1 = -hopper.z0;
+    hopper.spacing = 2.2 * radius;
+    hopper.lift = 0.5;
+    hopper.columns = std::max(1, static_cast<int>(std::floor((hopper.x1 - hopper.x0) / hopper.spacing)));
+    hopper.rows = std::max(1, static_cast<int>(std::floor((hopper.z1 - hopper.z0) / hopper.spacing)));
+    const long long perLayer = static_cast<long long>(hopper.columns) * hopper.rows;
+    hopper.layers = static_cast<int>(std::max<long long>(1, (balls + perLayer - 1) / perLayer));
+}
+
+void Layout::build(int carCount, int balls)
 {
     const double drop = blockLength * std::sin(slope), run = blockLength * std::cos(slope);
     height = blocks * drop;
     xTop = -crossing;
-    hopper = Hopper{1.0, std::max(1.0 + 4.0 * radius, std::min(0.4 * run, 30.0)), -0.5 * width + radius + 0.2,
-                    0.5 * width - radius - 0.2, 0.5};
-    houseTop = height + 12.0;
+    placeHopper(balls);
+    // Above the hopper's top by more than any rebound can rise (energy: no ball rises above
+    // its start height).
+    houseTop = height + hopper.top() + 10.0;
     addSegment(ItemKind::Crossing, -1, xTop, height, crossing, 0.0);
     double x = 0.0, y = height;
     for (int k = 0; k < blocks; ++k) {
@@ -111,21 +134,26 @@ void Layout::build(int carCount)
     const double bottom = -3.0, across = 0.5 * width + sidewalk;
     const double houseX0 = xTop - kHouseDepth, houseX1 = xFoot;
     for (double side : {-1.0, 1.0})
-        boxes.push_back({ItemKind::House, -1,
-                         Eigen::Vector3d(0.5 * (houseX0 + houseX1), 0.5 * (bottom + houseTop),
-                                         side * (across + 0.5 * kHouseDepth)),
-                         0.0,
-                         Eigen::Vector3d(0.5 * (houseX1 - houseX0), 0.5 * (houseTop - bottom), 0.5 * kHouseDepth)});
+        boxes.push_back(
+            {ItemKind::House, -1,
+             Eigen::Vector3d(0.5 * (houseX0 + houseX1), 0.5 * (bottom + houseTop), side * (across + 0.5 * kHouseDepth)),
+             0.0, Eigen::Vector3d(0.5 * (houseX1 - houseX0), 0.5 * (houseTop - bottom), 0.5 * kHouseDepth)});
     boxes.push_back({ItemKind::BackWall, -1,
                      Eigen::Vector3d(xTop - 0.5 * kHouseDepth, 0.5 * (height - kGround + houseTop), 0.0), 0.0,
                      Eigen::Vector3d(0.5 * kHouseDepth, 0.5 * (houseTop - height + kGround), across + kHouseDepth)});
-    // Parked cars: block i % blocks, then alternating sides, then slots down the block.
-    const int perSide = carSlots(1, blockLength) / 2;
-    for (int i = 0; i < carCount && perSide > 0; ++i) {
-        const int block = i % blocks, j = i / blocks;
+    // Parked cars: round the blocks that still have a free slot, alternating sides, then slots
+    // down each block (the hopper's part of block 1 kept free).
+    std::vector<int> parked(static_cast<std::size_t>(blocks), 0);
+    carCount = std::min(carCount, carSlots(blocks, blockLength));
+    for (int i = 0, block = 0; i < carCount; block = (block + 1) % blocks) {
+        if (parked[static_cast<std::size_t>(block)] >= 2 * slotsPerSide(block, blockLength))
+            continue; // full (carSlots bounds carCount, so another block has room)
+        const int j = parked[static_cast<std::size_t>(block)]++;
+        ++i;
         const double side = j % 2 == 0 ? -1.0 : 1.0;
         const int slot = j / 2;
-        const double s = kCarGap + (slot + 0.5) * (kCarLength + kCarGap); // along the road from the block's top
+        // along the road from the block's top
+        const double s = firstSlotFrom(block, blockLength) + kCarGap + (slot + 0.5) * (kCarLength + kCarGap);
         const Eigen::Vector3d along(std::cos(slope), -std::sin(slope), 0.0), up(std::sin(slope), std::cos(slope), 0.0);
         const Eigen::Vector3d top(blockStartX[static_cast<std::size_t>(block)], height - block * drop, 0.0);
         const Eigen::Vector3d centre = top + s * along + 0.5 * kCarHeight * up +
@@ -146,10 +174,10 @@ void Layout::bin(double pad)
         // The box's x extent: its centre +- the projections of its half extents on x.
         const double reach = std::abs(std::cos(b.angle)) * b.half.x() + std::abs(std::sin(b.angle)) * b.half.y();
         const double x0 = b.centre.x() - reach - pad, x1 = b.centre.x() + reach + pad;
-        const auto first = static_cast<std::size_t>(std::clamp(std::floor((x0 - binLo_) / binWidth_), 0.0,
-                                                               static_cast<double>(bins - 1)));
-        const auto last = static_cast<std::size_t>(std::clamp(std::floor((x1 - binLo_) / binWidth_), 0.0,
-                                                              static_cast<double>(bins - 1)));
+        const auto first = static_cast<std::size_t>(
+            std::clamp(std::floor((x0 - binLo_) / binWidth_), 0.0, static_cast<double>(bins - 1)));
+        const auto last = static_cast<std::size_t>(
+            std::clamp(std::floor((x1 - binLo_) / binWidth_), 0.0, static_cast<double>(bins - 1)));
         for (std::size_t k = first; k <= last; ++k)
             lists[k].push_back(static_cast<std::uint16_t>(i));
     }

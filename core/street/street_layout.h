@@ -17,6 +17,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -37,29 +39,46 @@ struct Box {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     double angle = 0.0;
     Eigen::Vector3d half = Eigen::Vector3d::Ones();
+    double cosA = 1.0, sinA = 0.0; // of `angle`, set by turn()
+
+    Box(ItemKind k, int seg, const Eigen::Vector3d& c, double a, const Eigen::Vector3d& h)
+        : kind(k), segment(seg), centre(c), angle(a), half(h), cosA(std::cos(a)), sinA(std::sin(a))
+    {
+    }
 
     Eigen::Vector3d axis(int a) const;
-    // p in the box's frame, and back.
-    Eigen::Vector3d toLocal(const Eigen::Vector3d& p) const;
-    Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const;
+    // p in the box's frame, and back; a direction (velocity, acceleration) in the box's frame.
+    Eigen::Vector3d toLocal(const Eigen::Vector3d& p) const { return rotateIn(p - centre); }
+    Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const { return centre + rotateOut(local); }
+    Eigen::Vector3d rotateIn(const Eigen::Vector3d& d) const // R^T d, R the turn by `angle` about z
+    {
+        return {cosA * d.x() + sinA * d.y(), -sinA * d.x() + cosA * d.y(), d.z()};
+    }
+    Eigen::Vector3d rotateOut(const Eigen::Vector3d& d) const
+    {
+        return {cosA * d.x() - sinA * d.y(), sinA * d.x() + cosA * d.y(), d.z()};
+    }
 };
 
 // The region the balls start in: a rectangle of the road seen from above, [x0, x1] x [z0, z1],
-// with the lowest layer of centres `lift` above the road under each ball.
+// holding a lattice of `columns` x `rows` sites a layer (spacing `spacing`), `layers` layers
+// deep; the lowest layer's centres are `lift` above the road under each site.
 struct Hopper {
-    double x0, x1, z0, z1, lift;
+    double x0 = 0.0, x1 = 0.0, z0 = 0.0, z1 = 0.0, lift = 0.5, spacing = 1.0;
+    int columns = 1, rows = 1, layers = 1;
+    double top() const { return lift + layers * spacing; } // above the road
 };
 
 struct Layout {
     // From valid parameters of the street scene (slope in degrees there, radians here).
     static Layout fromParams(const ParamValues& v);
     Layout(double slopeRadians, int blocks, double blockLength, double crossing, double width, double kerb,
-           double sidewalk, int cars, double radius);
+           double sidewalk, int cars, double radius, int balls);
 
     double slope, blockLength, crossing, width, kerb, sidewalk, radius;
     int blocks, cars;
-    double xTop = 0.0;  // uphill end of the top crossing
-    double xFoot = 0.0; // the open lower end
+    double xTop = 0.0;   // uphill end of the top crossing
+    double xFoot = 0.0;  // the open lower end
     double height = 0.0; // road height at the top: blocks * block_length * sin(slope)
     double houseTop = 0.0;
     std::vector<Box> boxes;
@@ -78,7 +97,8 @@ struct Layout {
     static int carSlots(int blocks, double blockLength);
 
 private:
-    void build(int cars);
+    void build(int cars, int balls);
+    void placeHopper(int balls);
     void addSegment(ItemKind kind, int segment, double x0, double y0, double length, double angle);
     void bin(double pad);
 

@@ -37,6 +37,9 @@ double defaultTEnd(SceneId scene)
         return 22.0; // floor bounces, the meeting at 9.8 s, the walls z = 0 (box) at 19.9 s (20.2 s)
     case SceneId::ManyBalls:
         break;
+    case SceneId::Street:
+        throw InputError("street: there is no closed form for a flood of balls down a street, and its flight is exact "
+                         "(event) only; use bounce1d, box3d or two-balls");
     }
     throw InputError("many-balls: there is no closed form for many colliding balls; use bounce1d, box3d or two-balls");
 }

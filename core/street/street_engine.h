@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// The physical model of stage 5 (`street`): N equal rough balls released above the top of
+// the street (street_layout.h), under gravity, meeting the street's boxes and each other
+// (docs/street.md).
+// 1. A step is cut into substeps short enough that no ball travels more than r/4 in one
+//    (the many-balls engine's bound), so two balls cannot pass through each other between
+//    two contact checks.
+// 2. A substep: (a) every ball on the street flies with its exact constant-acceleration
+//    motion, free or resting on a face (rolling or sliding, street_contact.h point 4);
+//    impacts with faces, leaving a face's edge and the start of rolling are located in
+//    time and the motion is split there (street_flight.cpp); edges and corners are met by
+//    closest point at the end of the flight. (b) Pairs of balls closer than 2 r are found in
+//    a grid of columns over the street's plan, 2.5 r wide at least (a skin of r/2 on the
+//    contact distance), and resolved in a fixed order, in passes until none overlaps by more than 1e-7 r (16 at most):
+//    impulse with restitution e and Walton's tangential impulse while they approach, then
+//    the overlap parted, half each, and the street met again; pairs apart that will touch
+//    within the next substep collide at once (speculative contacts; street_pairs.cpp).
+//    (c) Balls beyond the open foot leave the run: they stay there at rest and cost nothing
+//    more.
+// 3. Threads share the flight and the pair search; the pairs are resolved on one thread in
+//    the search's order, so a run is the same bit for bit for any thread count.
+#pragma once
+
+#include "street_census.h"
+#include "street_contact.h"
+#include "street_layout.h"
+
+#include "../broadphase/uniform_grid.h"
+#include "../simulation.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace ab::physical {
+class WorkerPool;
+}
+
+namespace ab::street {
+
+struct Settings {
+    int n = 0;
+    double radius = 0.03;
+    double g = 9.82;
+    double e = 0.8;
+    double restHeight = 0.001;
+    double mu = 0.0, beta = 0.0, inertia = 0.4;
+    double speed = 0.5;
+    std::uint64_t seed = 2014;
+    int threads = 1;
+    double dt = 1.0 / 60.0;
+
+    // Throws InputError for what the street does not offer (its flight is `event`'s).
+    static Settings fromSpec(const RunSpec& spec, double dt);
+    bool rough() const { return mu > 0.0 && beta > -1.0; }
+    Surface surface() const;
+};
+
+// The hopper's start: n balls on its lattice (street_layout.h), filling the lowest layer
+// first, downhill columns first; each centre moved from its site by up to 0.1 r on every
+// axis and given a velocity uniform in [-speed, speed]^3 (SplitMix64 from `seed`: 3 offsets,
+// then 3 velocity components per ball); no spin.
+State hopperStart(const Layout& layout, const Settings& s);
+
+class Engine {
+public:
+    Engine(Layout layout, const Settings& settings);
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // Takes positions, velocities and spins from `s` (settings.n balls); finds again which
+    // balls rest on a face.
+    void load(const State& s);
+    void store(State& s) const;
+    void step();
+
+    long long impactsLastStep() const { return impacts_; }
+    int onStreet() const { return static_cast<int>(active_.size()); }
+    const Layout& layout() const { return layout_; }
+    const Settings& settings() const { return settings_; }
+    // The face ball i rests on, if any.
+    FaceRef support(int i) const { return support_[static_cast<std::size_t>(i)]; }
+    std::size_t bytes() const;
+
+private:
+    struct Ball {
+        Eigen::Vector3d p, v, w;
+    };
+    void substep(double h);
+    void fly(int i, double h, long long& impacts);
+    void settle(int i, long long& impacts);
+    void findSupport(int i);
+    void sizeColumns();
+    int columnOf(const Eigen::Vector3d& p, int& cx, int& cz) const;
+    void buildCells();
+    void findPairs(int chunk);
+    // One pass over the listed pairs (the first also takes the speculative contacts of pairs
+    // apart that meet within h); returns the largest overlap it parted.
+    double resolvePairs(long long& impacts, double h, bool first);
+    bool collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const;
+    void retire();
+    int substepsFor(double dt) const;
+
+    Layout layout_;
+    Settings settings_;
+    Surface surface_;
+    std::unique_ptr<physical::WorkerPool> pool_;
+    std::vector<Ball> balls_;
+    std::vector<FaceRef> support_;
+    std::vector<int> active_; // the balls on the street, in index order
+    // The grid of columns over the street's plan (street_pairs.cpp): per active ball its
+    // column and the next ball of its column's list; each column's first ball.
+    struct Columns {
+        double x0 = 0.0, z0 = 0.0, side = 1.0;
+        int nx = 1, nz = 1;
+    } columns_;
+    std::vector<std::uint32_t> bucket_, next_, columnHead_;
+    std::vector<std::vector<broadphase::Pair>> pairs_; // per chunk of active balls
+    std::vector<std::uint8_t> touched_;                // moved by a pair this substep
+    std::vector<double> workerMaxSpeed2_;
+    std::vector<long long> workerImpacts_;
+    long long impacts_ = 0;
+    double maxSpeed_ = 0.0;
+};
+
+std::unique_ptr<Simulation> makeStreet(const RunSpec& spec, double dt);
+
+} // namespace ab::street

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// The contacts between the street's balls (street_engine.h point 2b).
+// 1. The balls roll and bounce in a thin layer over a long, narrow street, so the grid is one
+//    of columns: cells over (x, z) at least 2.5 r wide (contact 2 r and a skin of r/2), the
+//    street's whole length and width, every height in one column. A centre beyond the grid
+//    falls in its outermost column (clamping never separates two coordinates). Each column
+//    keeps a linked list of its balls, latest first: O(N) a substep, however many columns.
+// 2. Two centres closer than 2.5 r lie in the same or adjacent columns. Each ball looks for
+//    later balls of its own column and for all the balls of the four columns after it (+x,
+//    and +z in the same x), so every pair is found once, in an order that does not depend on
+//    the threads; a height test then the exact distance keep only the near ones.
+// 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
+//    more than 1e-7 r (Gauss-Seidel; 16 passes at most): eqs 2.4-2.7 along the line of
+//    centres with restitution e, Walton's impulse between rough balls (pair_friction.h), the
+//    overlap parted half each; a ball moved then meets the street again (settle). The first
+//    pass also takes the pairs that will meet within the next substep (speculative contacts).
+#include "street_engine.h"
+
+#include "../physical/pair_friction.h"
+#include "../physical/worker_pool.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ab::street {
+
+using broadphase::Pair;
+
+namespace {
+
+constexpr int kPairChunk = 2048; // active balls a worker searches at a time
+// Pairs are listed within 2 r + a skin of r/2: a pass that pushes a ball into a neighbour it
+// did not touch after the flight still finds that pair in the list, and so does a pair that
+// will touch within the next substep (two balls close by at most r/2 in one).
+constexpr double kSkin = 1.0;
+constexpr std::uint32_t kEnd = 0xffffffffu; // the end of a column's list
+
+} // namespace
+
+void Engine::sizeColumns()
+{
+    // The street's plan, every item's reach, in cells of at least the pair distance and at most
+    // about max(8 N, 2^20) cells in all (cells grow beyond that distance to respect it).
+    const double reach = (2.0 + kSkin) * settings_.radius;
+    columns_.x0 = layout_.xTop - 4.0;
+    columns_.z0 = -(0.5 * layout_.width + layout_.sidewalk);
+    const double lengthX = layout_.xFoot + 1.0 - columns_.x0, lengthZ = -2.0 * columns_.z0;
+    const double cells = std::max(8.0 * settings_.n, 1048576.0);
+    columns_.side = std::max(reach * (1.0 + 1e-9), std::sqrt(lengthX * lengthZ / cells));
+    columns_.nx = std::max(1, static_cast<int>(std::ceil(lengthX / columns_.side)));
+    columns_.nz = std::max(1, static_cast<int>(std::ceil(lengthZ / columns_.side)));
+}
+
+int Engine::columnOf(const Eigen::Vector3d& p, int& cx, int& cz) const
+{
+    const double inv = 1.0 / columns_.side;
+    // max/min clamps NaN to the first column too
+    cx = static_cast<int>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
+    cz = static_cast<int>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
+    return cx + columns_.nx * cz;
+}
+
+void Engine::buildCells()
+{
+    // Linked lists per column (head, then next): O(N) a substep, whatever the number of
+    // columns; the columns used last time are emptied first.
+    const std::size_t count = active_.size();
+    if (columnHead_.empty())
+        columnHead_.assign(static_cast<std::size_t>(columns_.nx) * static_cast<std::size_t>(columns_.nz), kEnd);
+    for (std::uint32_t c : bucket_)
+        columnHead_[c] = kEnd;
+    bucket_.resize(count);
+    next_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        int cx = 0, cz = 0;
+        const auto c = static_cast<std::uint32_t>(columnOf(balls_[static_cast<std::size_t>(active_[k])].p, cx, cz));
+        bucket_[k] = c;
+        next_[k] = columnHead_[c]; // each list runs from the latest ball to the earliest
+        columnHead_[c] = static_cast<std::uint32_t>(k);
+    }
+    pairs_.resize((count + kPairChunk - 1) / kPairChunk);
+}
+
+void Engine::findPairs(int chunk)
+{
+    auto& out = pairs_[static_cast<std::size_t>(chunk)];
+    out.clear();
+    const double reach = (2.0 + kSkin) * settings_.radius, reach2 = reach * reach;
+    const std::size_t begin = static_cast<std::size_t>(chunk) * kPairChunk;
+    const std::size_t end = std::min(active_.size(), begin + kPairChunk);
+    // The own column (later balls only), then +x with z - 1, z, z + 1, and z + 1 in the same x.
+    constexpr int kAfter[4][2] = {{1, -1}, {1, 0}, {1, 1}, {0, 1}};
+    const auto test = [&](std::size_t k, const Eigen::Vector3d& p, std::uint32_t other) {
+        const Eigen::Vector3d& q = balls_[static_cast<std::size_t>(active_[other])].p;
+        const double dy = q.y() - p.y();
+        if (dy * dy < reach2 && (q - p).squaredNorm() < reach2)
+            out.push_back(Pair{static_cast<std::uint32_t>(active_[k]), static_cast<std::uint32_t>(active_[other])});
+    };
+    for (std::size_t k = begin; k < end; ++k) {
+        const Eigen::Vector3d& p = balls_[static_cast<std::size_t>(active_[k])].p;
+        for (std::uint32_t o = columnHead_[bucket_[k]]; o != kEnd && o > k; o = next_[o])
+            test(k, p, o); // the later balls of its own column come first in its list
+        int cx = 0, cz = 0;
+        columnOf(p, cx, cz);
+        for (const auto& d : kAfter) {
+            const int x = cx + d[0], z = cz + d[1];
+            if (x < 0 || x >= columns_.nx || z < 0 || z >= columns_.nz)
+                continue;
+            for (std::uint32_t o = columnHead_[static_cast<std::size_t>(x + columns_.nx * z)]; o != kEnd; o = next_[o])
+                test(k, p, o);
+        }
+    }
+}
+
+// Eqs 2.4-2.7 for equal masses along n (a to b), u = (v_b - v_a).n < 0: u becomes -e u through
+// the impulse j n on a, -j n on b, j = (1 + e) u / 2; momentum kept, energy changes by
+// (e^2 - 1) u^2 / 4. A rebound slower than the rest speed is stopped (e taken as 0). Rough
+// balls exchange Walton's impulse too (S11-S12). Returns true for a rebound.
+bool Engine::collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const
+{
+    const double e = settings_.e;
+    const bool bounces = -e * u >= surface_.restSpeed;
+    const double j = 0.5 * (1.0 + (bounces ? e : 0.0)) * u;
+    if (surface_.rough) {
+        physical::PairVelocities pv{a.v, b.v, a.w, b.w};
+        physical::waltonBetween(pv, n, (1.0 + (bounces ? e : 0.0)) * -u, surface_.friction);
+        a.v = pv.va, b.v = pv.vb, a.w = pv.wa, b.w = pv.wb;
+    }
+    a.v += j * n;
+    b.v -= j * n;
+    return bounces;
+}
+
+double Engine::resolvePairs(long long& impacts, double h, bool first)
+{
+    const double contact = 2.0 * settings_.radius;
+    double largest = 0.0;
+    for (const auto& list : pairs_)
+        for (const Pair& pair : list) {
+            Ball& a = balls_[pair.a];
+            Ball& b = balls_[pair.b];
+            Eigen::Vector3d n = b.p - a.p;
+            const double d = n.norm();
+            if (!(d < contact)) {
+                // Apart: in the first pass, a pair that would touch within the next substep
+                // (|D + dV t| = 2 r for the relative position D and velocity dV, the earlier root
+                // in [0, h]) collides now, along the normal it would meet at (a speculative
+                // contact): no two balls graze or pass within a substep unseen.
+                const Eigen::Vector3d dv = b.v - a.v;
+                const double approach = n.dot(dv), vv = dv.squaredNorm();
+                if (!first || !(approach < 0.0))
+                    continue;
+                const double disc = approach * approach - vv * (d * d - contact * contact);
+                if (disc < 0.0)
+                    continue; // they pass each other
+                const double t = (-approach - std::sqrt(disc)) / vv;
+                if (!(t <= h))
+                    continue;
+                const Eigen::Vector3d meet = (n + t * dv) / contact;
+                if (collide(a, b, meet, dv.dot(meet)))
+                    ++impacts;
+                continue;
+            }
+            n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
+            const double u = (b.v - a.v).dot(n); // negative while they approach
+            if (u < 0.0 && collide(a, b, n, u))
+                ++impacts;
+            largest = std::max(largest, contact - d);
+            const double half = 0.5 * (contact - d);
+            a.p -= half * n;
+            b.p += half * n;
+            touched_[pair.a] = touched_[pair.b] = 1;
+        }
+    return largest;
+}
+
+} // namespace ab::street
