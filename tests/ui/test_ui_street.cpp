@@ -8,11 +8,13 @@
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/charts/street_sample.h"
+#include "ui/panels/chart_panel.h"
 #include "ui/panels/run_options_panel.h"
 #include "ui/panels/street_equations.h"
 #include "ui/view/scene_geometry.h"
 #include "ui/view/street_camera.h"
 
+#include <QChartView>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineSeries>
@@ -171,6 +173,22 @@ private slots:
         }
         QCOMPARE(parseChartKind("foot-rate"), std::optional(ChartKind::FootRate));
         QCOMPARE(parseChartKind("speeds"), std::optional(ChartKind::Speeds));
+    }
+
+    void chartPanelShowsTheStreetsChartsAtAReadableHeight()
+    {
+        ChartPanel panel;
+        panel.resize(600, 4000); // room for every chart on one page
+        ChartUnits units;
+        units.streetBlocks = 3;
+        panel.configure(sceneInfo(SceneId::Street), 10, 0, 30.0, units);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        for (ChartKind kind : {ChartKind::Energy, ChartKind::FootRate, ChartKind::Speeds}) {
+            QVERIFY(panel.chartShown(kind));
+            QVERIFY2(panel.chartView(kind)->height() >= 200, chartKey(kind).data());
+        }
+        QVERIFY(!panel.chartShown(ChartKind::Activity) || !panel.chartView(ChartKind::Activity)->isVisible());
     }
 
     void reportModelIsNotOfferedForTheStreet()

@@ -97,7 +97,10 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     applies_.fill(true);
     wanted_.fill(true);
     available_.fill(true);
-    splitter->setSizes({300, 300, 260, 220, 220, 220, 220});
+    QList<int> sizes = {300, 300, 260};
+    while (sizes.size() < qsizetype(allChartKinds().size()))
+        sizes << 220; // every chart a size: one left out would start collapsed to nothing
+    splitter->setSizes(sizes);
     // Up to five charts: when the window is too short for all of them at a readable
     // height they scroll, rather than shrink until their labels are cut.
     auto* scroll = new QScrollArea;

@@ -70,10 +70,8 @@ void box(std::vector<FlatVertex>& out, const Box& b, const QColor& colour)
 
 Box axisBox(ItemKind kind, const QVector3D& lo, const QVector3D& hi)
 {
-    Box b{kind};
-    b.centre = Eigen::Vector3d((lo.x() + hi.x()) / 2.0, (lo.y() + hi.y()) / 2.0, (lo.z() + hi.z()) / 2.0);
-    b.half = Eigen::Vector3d((hi.x() - lo.x()) / 2.0, (hi.y() - lo.y()) / 2.0, (hi.z() - lo.z()) / 2.0);
-    return b;
+    const Eigen::Vector3d a(lo.x(), lo.y(), lo.z()), b(hi.x(), hi.y(), hi.z());
+    return Box(kind, -1, (a + b) / 2.0, 0.0, (b - a) / 2.0);
 }
 
 // A strip of road marking from x0 to x1 (along the road under them) between z0 and z1.
