@@ -251,7 +251,9 @@ void MainWindow::takeRunOf(MainWindow& old)
     navigator_->setPreset(scene_, old.navigator_->presetName(), old.navigator_->presetDescription());
     if (view_ && old.view_) {
         const OrbitCamera& c = old.view_->camera();
-        view_->setCameraPose(c.target(), c.yaw(), c.pitch(), c.distance());
+        view_->setCameraPose(c.target(), c.yaw(), c.pitch(), c.distance(), c.fovY());
+        if (const std::optional<StreetShot> shot = old.view_->streetShot())
+            view_->setStreetShot(*shot); // the flood shot goes on following the flood
     }
     if (lookedAt)
         transport_->lookAt(*lookedAt);

@@ -1156,7 +1156,7 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     </message>
     <message>
         <source>median</source>
-        <translation>median</translation>
+        <translation>medianfart</translation>
     </message>
     <message>
         <source>90th percentile</source>
@@ -3076,6 +3076,38 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)</source>
         <translation>width: %1 m lämnar inget utrymme för bollar med radien %2 m (width måste vara minst 8 r)</translation>
+    </message>
+    <message>
+        <source>10,000 superballs with restitution 0.95 and tangential restitution 0.9 (Garwin&apos;s superball: the contact point&apos;s slip reverses at each impact, so spin turns into speed and back). They keep bouncing high all the way down, jump far off each crossing, and hit the house fronts; the energy chart shows translation and rotation trading while the total falls only slowly as the balls drop.</source>
+        <translation>10 000 superbollar med studskoefficienten 0.95 och den tangentiella studskoefficienten 0.9 (Garwins superboll: kontaktpunktens glidning vänds vid varje stöt, så rotation blir fart och tillbaka). De fortsätter att studsa högt hela vägen ned, hoppar långt från varje korsning och träffar husfasaderna; energidiagrammet visar translation och rotation som byter energi medan summan bara sjunker långsamt när bollarna faller.</translation>
+    </message>
+    <message>
+        <source>One ball rolling down one block: the 5/7 rule on a slope</source>
+        <translation>En boll som rullar nedför ett kvarter: 5/7-regeln i en backe</translation>
+    </message>
+    <message>
+        <source>One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = 0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street.</source>
+        <translation>En boll som sätts ned på ett kvarter med 17 graders lutning utan studs (e = 0). När den har landat håller friktionen (mu = 0.5, mer än q tan(theta)/(1 + q) = 0.087) den rullande utan glidning: den accelererar med a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 grader = 2.051 m/s^2, inte med de 2.871 m/s^2 som en boll som glider utan friktion får, och r w = v hela vägen (ekv. St1). Hastighetsdiagrammet stiger i en rät linje; vid foten, 80 m längre ned, rullar den med ungefär 18 m/s och lämnar gatan.</translation>
+    </message>
+    <message>
+        <source>Sony&apos;s advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper over the top of three 17 deg blocks with parked cars along the kerbs, restitution 0.85 and grippy rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away.</source>
+        <translation>Sonys reklamfilm släppte 250 000 superbollar nedför en gata i San Francisco. Här faller de från behållaren ovanför krönet av tre kvarter med 17 graders lutning och parkerade bilar längs trottoarkanterna, studskoefficient 0.85 och greppigt gummi (mu = 0.6, beta = 0.4). Sedd från backens fot kommer floden nedför första kvarteret inom 5 s och hoppar vid varje korsning; fartfördelningen breddas när fronten drar ifrån.</translation>
+    </message>
+    <message>
+        <source>Superballs: e and beta near 1</source>
+        <translation>Superbollar: e och beta nära 1</translation>
+    </message>
+    <message>
+        <source>Ten thousand superballs down a steep street</source>
+        <translation>Tiotusen superbollar nedför en brant gata</translation>
+    </message>
+    <message>
+        <source>The advert: a quarter of a million superballs</source>
+        <translation>Reklamfilmen: en kvarts miljon superbollar</translation>
+    </message>
+    <message>
+        <source>The report&apos;s basic idea (chapter 3.1): balls bouncing down a steep street like Sony&apos;s advert, set going by gravity and slope. 10,000 balls of 3 cm drop from a hopper over the top of a 17 deg street (a 31 % grade) of three 80 m blocks with flat crossings between them. They land, roll and bounce down block 1 (a rolling ball gains 5/7 g sin 17 deg = 2.05 m/s^2), jump where each crossing ends, and leave at the foot; the balls-per-second chart counts them past each block&apos;s foot.</source>
+        <translation>Rapportens grundidé (kapitel 3.1): bollar som studsar nedför en brant gata som i Sonys reklamfilm, satta i rörelse av gravitation och lutning. 10 000 bollar på 3 cm faller från en behållare ovanför krönet av en gata med 17 graders lutning (31 % stigning) och tre kvarter på 80 m med plana korsningar emellan. De landar, rullar och studsar nedför kvarter 1 (en rullande boll ökar farten med 5/7 g sin 17 grader = 2.05 m/s^2), hoppar där varje korsning slutar och lämnar gatan vid foten; diagrammet med bollar per sekund räknar dem förbi varje kvarters fot.</translation>
     </message>
 </context>
 <context>

@@ -405,6 +405,33 @@ const char* const listed[] = {
                       "start velocities: each component uniform in [-speed, speed] (gravity and slope do the rest)"),
     QT_TRANSLATE_NOOP("core", "width of each sidewalk, between kerb and house fronts"),
     QT_TRANSLATE_NOOP("core", "width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)"),
+    // The street's built-in presets.
+    QT_TRANSLATE_NOOP(
+        "core", "10,000 superballs with restitution 0.95 and tangential restitution 0.9 (Garwin's superball: the "
+                "contact point's slip reverses at each impact, so spin turns into speed and back). They keep bouncing "
+                "high all the way down, jump far off each crossing, and hit the house fronts; the energy chart shows "
+                "translation and rotation trading while the total falls only slowly as the balls drop."),
+    QT_TRANSLATE_NOOP("core", "One ball rolling down one block: the 5/7 rule on a slope"),
+    QT_TRANSLATE_NOOP("core",
+                      "One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = "
+                      "0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates "
+                      "at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a "
+                      "ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a "
+                      "straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street."),
+    QT_TRANSLATE_NOOP(
+        "core", "Sony's advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper "
+                "over the top of three 17 deg blocks with parked cars along the kerbs, restitution 0.85 and grippy "
+                "rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block "
+                "within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away."),
+    QT_TRANSLATE_NOOP("core", "Superballs: e and beta near 1"),
+    QT_TRANSLATE_NOOP("core", "Ten thousand superballs down a steep street"),
+    QT_TRANSLATE_NOOP("core", "The advert: a quarter of a million superballs"),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's basic idea (chapter 3.1): balls bouncing down a steep street like Sony's advert, set "
+                "going by gravity and slope. 10,000 balls of 3 cm drop from a hopper over the top of a 17 deg street "
+                "(a 31 % grade) of three 80 m blocks with flat crossings between them. They land, roll and bounce down "
+                "block 1 (a rolling ball gains 5/7 g sin 17 deg = 2.05 m/s^2), jump where each crossing ends, and "
+                "leave at the foot; the balls-per-second chart counts them past each block's foot."),
 };
 
 } // namespace

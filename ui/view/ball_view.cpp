@@ -157,9 +157,9 @@ void BallView::frameScene()
     framePending_ = false;
 }
 
-void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance)
+void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float fovYDeg)
 {
-    camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length());
+    camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length(), fovYDeg);
     framePending_ = false;
     userMovedCamera();
     update();

@@ -69,7 +69,8 @@ public:
     // Turns the camera about the vertical through the target (the window's turntable).
     void turn(float yawDegrees);
     // Places the camera (a preset's view); it then stays until the user moves it.
-    void setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance);
+    void setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance,
+                       float fovYDeg = OrbitCamera::kDefaultFovY);
 
     // The street's camera shots (stage 5): placed at once, the flood shot then follows the
     // front of the flood with every frame; moving the camera by hand leaves the shot
