@@ -378,6 +378,10 @@ private slots:
         QTest::newRow("stage 2") << SceneId::Box3d << (motion + difference);
         QTest::newRow("stage 3") << SceneId::TwoBalls << (motion + QStringList{"export-momentum"} + difference);
         QTest::newRow("stage 4") << SceneId::ManyBalls << (motion + QStringList{"export-momentum", "export-activity"});
+        // The street's balls turn (mu > 0): the spin chart; and its own flood charts.
+        QTest::newRow("stage 5") << SceneId::Street
+                                 << QStringList{"export-position", "export-velocity",  "export-spin",
+                                                "export-energy",   "export-foot-rate", "export-speeds"};
     }
     void exportMenuOffersTheStagesChartsOnly()
     {
