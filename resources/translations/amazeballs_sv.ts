@@ -1799,28 +1799,28 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Kamera:</translation>
     </message>
     <message>
-        <source>From the foot</source>
-        <translation>Från foten</translation>
-    </message>
-    <message>
         <source>Low on the road past the foot, looking up the street: the advert&apos;s shot (F)</source>
         <translation>Lågt på gatan bortom foten, med blicken uppför gatan: reklamfilmens bild (F)</translation>
-    </message>
-    <message>
-        <source>From the side</source>
-        <translation>Från sidan</translation>
     </message>
     <message>
         <source>The street in profile, the near houses cut away (S)</source>
         <translation>Gatan i profil, de närmaste husen bortskurna (S)</translation>
     </message>
     <message>
-        <source>Follow the flood</source>
-        <translation>Följ floden</translation>
-    </message>
-    <message>
         <source>Ahead of the front of the flood, moving down the hill with it (G)</source>
         <translation>Framför flodens front, på väg nedför backen med den (G)</translation>
+    </message>
+    <message>
+        <source>Foot</source>
+        <translation>Foten</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Sidan</translation>
+    </message>
+    <message>
+        <source>Flood</source>
+        <translation>Floden</translation>
     </message>
 </context>
 <context>

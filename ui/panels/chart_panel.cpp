@@ -279,6 +279,9 @@ void ChartPanel::paginate()
             pages_->addTab(label);
     }
     pages_->setVisible(count > 1);
+    // Tabs wider than the panel (the street's six charts, one a page in lecture mode) scroll
+    // with arrows rather than run past its edge.
+    pages_->setUsesScrollButtons(pages_->sizeHint().width() > width());
     pages_->setCurrentIndex(std::clamp(current, 0, std::max(count - 1, 0)));
     updating_ = false;
     showPage(pages_->currentIndex());

@@ -45,11 +45,12 @@ StreetCameraBar::StreetCameraBar(BallView* view, QWidget* parent) : QWidget(pare
 void StreetCameraBar::retranslate()
 {
     findChild<QLabel*>("streetCameraLabel")->setText(tr("Camera:"));
-    buttons_[0]->setText(tr("From the foot"));
+    // Short words: the bar must read whole over the view's column in lecture mode at 1280 px.
+    buttons_[0]->setText(tr("Foot"));
     buttons_[0]->setToolTip(tr("Low on the road past the foot, looking up the street: the advert's shot (F)"));
-    buttons_[1]->setText(tr("From the side"));
+    buttons_[1]->setText(tr("Side"));
     buttons_[1]->setToolTip(tr("The street in profile, the near houses cut away (S)"));
-    buttons_[2]->setText(tr("Follow the flood"));
+    buttons_[2]->setText(tr("Flood"));
     buttons_[2]->setToolTip(tr("Ahead of the front of the flood, moving down the hill with it (G)"));
 }
 
