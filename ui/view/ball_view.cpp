@@ -134,7 +134,9 @@ void BallView::placeStreetShot()
     if (!shot_ || !layout_.street)
         return;
     const float aspect = float(width()) / float(std::max(height(), 1));
-    const auto front = *shot_ == StreetShot::Flood ? floodFront(*layout_.street, balls_) : std::nullopt;
+    auto front = *shot_ == StreetShot::Flood ? floodFront(*layout_.street, balls_) : std::nullopt;
+    if (!front && !balls_.empty()) // every ball has left: the flood has passed the foot
+        front = float(layout_.street->xFoot);
     const CameraPose pose = streetPose(*layout_.street, *shot_, aspect, front);
     camera_.setPose(pose, (geometry_.hi - geometry_.lo).length());
     framePending_ = false;
