@@ -60,7 +60,7 @@ HealthCheck::Impl::Impl(const Simulation& s, const State& start)
     }
     if (spec.scene == SceneId::Street) {
         streetLayout.emplace(street::Layout::fromParams(spec.params));
-        overlapAllowance = 1e-6;
+        overlapAllowance = 1e-2;
     }
     setUpAngularMomentum();
     e0 = energy(start);

@@ -127,6 +127,11 @@ void HealthCheck::Impl::checkPairs(const State& b, const State& a)
     const int n = a.size();
     if (n < 2 || !(r > 0.0))
         return;
+    if (streetLayout) { // the balls on the street, in a grid of any shape
+        if (n <= sampledAbove || pairChecks++ % 10 == 0)
+            hashedOverlaps(b, a);
+        return;
+    }
     if (n <= 256) {
         for (int i = 0; i < n; ++i)
             for (int j = i + 1; j < n; ++j)
@@ -138,10 +143,7 @@ void HealthCheck::Impl::checkPairs(const State& b, const State& a)
     // Many balls: overlaps on a grid of cells 2r wide; every 10th step beyond 1e5.
     if (n > sampledAbove && pairChecks++ % 10 != 0)
         return;
-    if (streetLayout)
-        hashedOverlaps(b, a);
-    else
-        gridOverlaps(b, a);
+    gridOverlaps(b, a);
 }
 
 void HealthCheck::Impl::gridOverlaps(const State& b, const State& a)

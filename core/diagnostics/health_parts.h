@@ -104,8 +104,8 @@ struct HealthCheck::Impl {
     std::vector<char> nearBall;
     std::optional<street::Layout> streetLayout; // stage 5's boxes (health_street.cpp)
     // Two balls overlapping by more than this times r is a finding. The street resolves its
-    // contacts in Gauss-Seidel passes down to 1e-7 r (street_pairs.cpp), and what a pass pushes
-    // into a pair it had not listed waits for the next substep; elsewhere round-off only.
+    // contacts in at most four Gauss-Seidel passes (street_pairs.cpp): a pile keeps overlaps of
+    // a few thousandths of r, a solver's slop (0.1 mm for its 3 cm balls); elsewhere round-off.
     double overlapAllowance = 1e-9;
 
     double potential(double y) const { return spring ? spring->potential(y) : g * (y - walls.lo.y()); }

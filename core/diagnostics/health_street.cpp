@@ -119,7 +119,8 @@ void HealthCheck::Impl::hashedOverlaps(const State& b, const State& a)
                         continue;
                     seen[count++] = c;
                     for (std::uint32_t k = cellStart[c]; k < cellStart[c + 1]; ++k)
-                        if (const int j = static_cast<int>(order[k]); j > i)
+                        if (const int j = static_cast<int>(order[k]);
+                            j > i && !street::hasLeft(*streetLayout, a.p(0, j))) // left balls rest out of the run
                             checkPair(b, a, i, j);
                 }
     }

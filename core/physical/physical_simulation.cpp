@@ -72,6 +72,8 @@ bool hasRotation(const Simulation& sim, const State& start)
     const World* w = worldOf(sim);
     if (!w) { // the many-balls engine: rough balls, or a start with spins
         const RunSpec& spec = sim.spec();
+        if (spec.scene == SceneId::Street) // the street's balls always carry spins
+            return spec.model == ModelKind::Physical;
         if (spec.scene != SceneId::ManyBalls || spec.model != ModelKind::Physical)
             return false;
         return ManyBallsSettings::fromSpec(spec, sim.dt()).rough() || start.spins();

@@ -7,18 +7,25 @@
 #include "case_rows.h"
 
 #include "../diagnostics/conservation.h"
+#include "../street/street_census.h"
 
 namespace ab::stability {
 
 namespace {
 
-// Total energy (translation, rotation, potential above the foot) at the end against the start.
+// Total energy (translation, rotation, potential above the foot) at the last state before a
+// ball left at the foot (a ball that leaves takes its energy with it), against the start.
 class StreetEnergyProbe final : public Probe {
 public:
-    explicit StreetEnergyProbe(const Simulation& sim) : meter_(sim) {}
+    explicit StreetEnergyProbe(const Simulation& sim)
+        : meter_(sim), layout_(street::Layout::fromParams(sim.spec().params))
+    {
+    }
 
     void observe(const State& s) override
     {
+        if (left_ || (left_ = street::census(layout_, s).left > 0))
+            return;
         const double e = meter_.measure(s).energy.total();
         if (!started_)
             e0_ = e, started_ = true;
@@ -28,12 +35,16 @@ public:
     {
         return started_ && e0_ > 0.0 ? std::optional(end_ / e0_ - 1.0) : std::nullopt;
     }
-    std::string note() const override { return "energy at the end " + num(end_ / e0_) + " x the start"; }
+    std::string note() const override
+    {
+        return "energy " + num(end_ / e0_) + " x the start " + (left_ ? "when the first ball left" : "at the end");
+    }
 
 private:
     ConservationMeter meter_;
+    street::Layout layout_;
     double e0_ = 0.0, end_ = 0.0;
-    bool started_ = false;
+    bool started_ = false, left_ = false;
 };
 
 std::unique_ptr<Probe> streetEnergy(const Simulation& sim)

@@ -12,10 +12,10 @@ namespace ab::street {
 
 namespace {
 
-constexpr double kMaxTravel = 0.5; // of r per substep (point 1)
+constexpr double kMaxTravel = 1.0; // of r per substep (point 1)
 constexpr int kMaxSubsteps = 4096;
 constexpr int kFlightChunk = 1024; // balls a worker flies at a time
-constexpr int kMaxPairPasses = 16; // over the contacts of a substep
+constexpr int kMaxPairPasses = 4;  // over the contacts of a substep
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 } // namespace
@@ -85,7 +85,7 @@ void Engine::store(State& s) const
 
 int Engine::substepsFor(double dt) const
 {
-    // The fastest ball, gaining at most g dt, should travel at most r/4 in a substep.
+    // The fastest ball, gaining at most g dt, should travel at most r/2 in a substep.
     const double travel = (maxSpeed_ + settings_.g * dt) * dt;
     const double count = std::ceil(travel / (kMaxTravel * settings_.radius));
     if (!(count > 1.0))
@@ -120,10 +120,12 @@ void Engine::substep(double h)
         pool_->forEach(static_cast<int>(pairs_.size()), [&](int chunk, int) { findPairs(chunk); });
         // Gauss-Seidel passes over the same pairs, each seeing the last one's results: what
         // one contact pushes into another, or into the street (settle), the next pass parts,
-        // until no listed pair overlaps by more than 1e-7 r.
-        double overlap = kInfinity;
-        for (int pass = 0; pass < kMaxPairPasses && overlap > 1e-7 * settings_.radius; ++pass) {
-            overlap = resolvePairs(workerImpacts_[0], h, pass == 0);
+        // until no listed pair overlaps by more than 1e-4 r and a pass turns none (a pair that an
+        // impulse turned towards another is seen again). A pile keeps what four passes leave (at
+        // most a few thousandths of r) for the next substep.
+        PassResult pass{kInfinity, 1};
+        for (int k = 0; k < kMaxPairPasses && (pass.overlap > 1e-4 * settings_.radius || pass.turned > 0); ++k) {
+            pass = resolvePairs(workerImpacts_[0], h);
             for (int i : active_)
                 if (touched_[static_cast<std::size_t>(i)] != 0) {
                     touched_[static_cast<std::size_t>(i)] = 0;

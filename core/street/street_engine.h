@@ -2,17 +2,17 @@
 // The physical model of stage 5 (`street`): N equal rough balls released above the top of
 // the street (street_layout.h), under gravity, meeting the street's boxes and each other
 // (docs/street.md).
-// 1. A step is cut into substeps short enough that no ball travels more than r/4 in one
-//    (the many-balls engine's bound), so two balls cannot pass through each other between
-//    two contact checks.
+// 1. A step is cut into substeps short enough that no ball travels more than r in one, so
+//    two balls close by at most 2 r in one: no more than the skin within which their pair is
+//    listed, so none passes through another between two contact checks.
 // 2. A substep: (a) every ball on the street flies with its exact constant-acceleration
 //    motion, free or resting on a face (rolling or sliding, street_contact.h point 4);
 //    impacts with faces, leaving a face's edge and the start of rolling are located in
 //    time and the motion is split there (street_flight.cpp); edges and corners are met by
-//    closest point at the end of the flight. (b) Pairs of balls closer than 2 r are found in
-//    a grid of columns over the street's plan, 2.5 r wide at least (a skin of r/2 on the
-//    contact distance), and resolved in a fixed order, in passes until none overlaps by more than 1e-7 r (16 at most):
-//    impulse with restitution e and Walton's tangential impulse while they approach, then
+//    closest point at the end of the flight. (b) Pairs of balls closer than 4 r (contact and a
+//    skin of 2 r) are found in a grid of columns over the street's plan and resolved in a fixed
+//    order, in passes until none overlaps by more than 1e-4 r (4 at most): impulse with
+//    restitution e and Walton's tangential impulse while they approach, then
 //    the overlap parted, half each, and the street met again; pairs apart that will touch
 //    within the next substep collide at once (speculative contacts; street_pairs.cpp).
 //    (c) Balls beyond the open foot leave the run: they stay there at rest and cost nothing
@@ -95,9 +95,13 @@ private:
     int columnOf(const Eigen::Vector3d& p, int& cx, int& cz) const;
     void buildCells();
     void findPairs(int chunk);
-    // One pass over the listed pairs (the first also takes the speculative contacts of pairs
-    // apart that meet within h); returns the largest overlap it parted.
-    double resolvePairs(long long& impacts, double h, bool first);
+    // One pass over the listed pairs, the speculative contacts of pairs apart that meet
+    // within h included: the largest overlap it parted, and how many pairs it turned.
+    struct PassResult {
+        double overlap = 0.0;
+        int turned = 0;
+    };
+    PassResult resolvePairs(long long& impacts, double h);
     bool collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const;
     void retire();
     int substepsFor(double dt) const;

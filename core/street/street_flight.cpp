@@ -21,6 +21,131 @@ constexpr double kLeaveSpeed = 1e-9;
 // The event that ends a leg of the motion.
 enum class Event { None, Face, Leave, Roll };
 
+// A leg of a ball's motion: its constant acceleration, and on a face the face's normal and
+// the resting motion there.
+struct Leg {
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    Resting rest;
+};
+
+// When the leg ends (within tau), why, and the face met.
+struct LegEnd {
+    double tau;
+    Event event = Event::None;
+    FaceRef hit;
+};
+
+// What the ball does in this leg: on its face while it still rests there (set exactly on the
+// contact, the velocity into the face taken away), else in flight under gravity.
+Leg legMotion(const Layout& layout, const Surface& surface, double r, Eigen::Vector3d& p, Eigen::Vector3d& v,
+              const Eigen::Vector3d& w, FaceRef& sup)
+{
+    Leg leg;
+    leg.a = Eigen::Vector3d(0.0, -surface.g, 0.0);
+    if (!sup.valid())
+        return leg;
+    const Box& box = layout.boxes[static_cast<std::size_t>(sup.item)];
+    leg.n = faceNormal(box, sup.face);
+    const double gap = faceGap(box, sup.face, p, r);
+    const double off = v.dot(leg.n);
+    if (std::abs(gap) > kRestGap * r + 1e-12 || off > kLeaveSpeed || !overFace(box, sup.face, box.toLocal(p), 1e-12)) {
+        sup = FaceRef{}; // lifted off (a pair's impulse), or past the face's edge
+        return leg;
+    }
+    p -= gap * leg.n; // exactly in contact
+    v -= off * leg.n; // the face takes what presses on it
+    leg.rest = restingMotion(v, w, leg.n, surface);
+    leg.a = leg.rest.a;
+    return leg;
+}
+
+// The earliest face the ball meets within end.tau (St5: the root of d0 + b t + q t^2 in each
+// box's frame, where the faces are coordinate planes), its centre then over the face.
+void nextFace(const Layout& layout, double r, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+              const Eigen::Vector3d& a, const FaceRef& sup, LegEnd& end)
+{
+    const double T = end.tau;
+    const double reach = r + T * v.norm() + 0.5 * T * T * a.norm(); // the farthest the ball gets in T
+    for (std::uint16_t item : layout.itemsNear(p.x())) {
+        const Box& box = layout.boxes[item];
+        const Eigen::Vector3d lp = box.toLocal(p);
+        if ((lp.cwiseAbs() - box.half).cwiseMax(0.0).squaredNorm() > reach * reach)
+            continue; // out of reach in this leg
+        const Eigen::Vector3d lv = box.rotateIn(v), la = box.rotateIn(a);
+        for (int face = 0; face < 6; ++face) {
+            if (sup.valid() && sup.item == item && sup.face == face)
+                continue;
+            const int k = face >> 1;
+            const double side = (face & 1) != 0 ? 1.0 : -1.0;
+            const double d0 = side * lp[k] - box.half[k] - r; // St5
+            if (d0 < -0.5 * r)
+                continue; // the centre is not outside this face: another face or an edge holds it
+            const double when = physical::manyballs::timeToWall(d0, side * lv[k], 0.5 * side * la[k], end.tau);
+            if (!(when <= end.tau) || !overFace(box, face, lp + when * lv + 0.5 * when * when * la, 1e-12))
+                continue;
+            if (when < end.tau || end.event == Event::None)
+                end = LegEnd{when, Event::Face, FaceRef{item, face}};
+        }
+    }
+}
+
+// For a ball resting on a face: when its centre passes the face's edge (its box coordinate
+// l(t) = l0 + (e_k.v) t + (e_k.a) t^2 / 2 reaching +-h_k), and when it starts to roll.
+void nextOnFace(const Layout& layout, const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Leg& leg,
+                const FaceRef& sup, LegEnd& end)
+{
+    const Box& box = layout.boxes[static_cast<std::size_t>(sup.item)];
+    const Eigen::Vector3d local = box.toLocal(p);
+    for (int k = 0; k < 3; ++k) {
+        if (k == sup.axis())
+            continue;
+        const Eigen::Vector3d e = box.axis(k);
+        const double lv = e.dot(v), la = e.dot(leg.a);
+        for (double side : {1.0, -1.0}) {
+            const double when =
+                physical::manyballs::timeToWall(box.half[k] - side * local[k], -side * lv, -0.5 * side * la, end.tau);
+            if (when < end.tau)
+                end = LegEnd{when, Event::Leave, FaceRef{}};
+        }
+    }
+    if (leg.rest.rollAt < end.tau)
+        end = LegEnd{leg.rest.rollAt, Event::Roll, FaceRef{}};
+}
+
+// What ends a leg does to the ball: leaving the face, rolling from now on, or an impact
+// (street_contact.h point 3), after which a ball that stopped on a face rests on it.
+void endLeg(const Layout& layout, const Surface& surface, double r, Eigen::Vector3d& p, Eigen::Vector3d& v,
+            Eigen::Vector3d& w, FaceRef& sup, const Leg& leg, const LegEnd& end, long long& impacts)
+{
+    switch (end.event) {
+    case Event::None:
+        return;
+    case Event::Leave:
+        sup = FaceRef{};
+        return;
+    case Event::Roll: {
+        // Rolling: the state that keeps the angular momentum about the contact point (S4).
+        const Eigen::Vector3d vt = v - v.dot(leg.n) * leg.n;
+        v = physical::rollingVelocity(vt, w, leg.n, surface.friction.q, r);
+        w = rollingSpin(v, w, leg.n, r);
+        return;
+    }
+    case Event::Face: {
+        const Box& box = layout.boxes[static_cast<std::size_t>(end.hit.item)];
+        const Eigen::Vector3d fn = faceNormal(box, end.hit.face);
+        p -= faceGap(box, end.hit.face, p, r) * fn; // on the face: round-off of the root taken out
+        bool approached = false;
+        const bool bounces = impactAlong(v, w, fn, surface, fn.y() > 0.0, approached);
+        if (bounces)
+            ++impacts;
+        if (approached && !bounces)
+            sup = end.hit; // it rests on the face from here (only faces gravity presses on stop a ball)
+        return;
+    }
+    }
+}
+
 } // namespace
 
 Resting restingMotion(const Eigen::Vector3d& v, const Eigen::Vector3d& w, const Eigen::Vector3d& n, const Surface& s)
@@ -87,121 +212,23 @@ void Engine::fly(int i, double h, long long& impacts)
     Ball& b = balls_[static_cast<std::size_t>(i)];
     FaceRef& sup = support_[static_cast<std::size_t>(i)];
     const double r = settings_.radius;
-    const Eigen::Vector3d g(0.0, -surface_.g, 0.0);
     double t = 0.0;
-    for (int leg = 0; leg < kMaxEvents && t < h; ++leg) {
-        const double T = h - t;
-        const bool last = leg == kMaxEvents - 1; // the rest of the substep without events
-        Eigen::Vector3d n = Eigen::Vector3d::Zero();
-        Resting rest;
-        if (sup.valid()) {
-            const Box& box = layout_.boxes[static_cast<std::size_t>(sup.item)];
-            n = faceNormal(box, sup.face);
-            const double gap = faceGap(box, sup.face, b.p, r);
-            const double off = b.v.dot(n);
-            if (std::abs(gap) > kRestGap * r + 1e-12 || off > kLeaveSpeed ||
-                !overFace(box, sup.face, box.toLocal(b.p), 1e-12)) {
-                sup = FaceRef{}; // lifted off (a pair's impulse), or past the face's edge
-            } else {
-                b.p -= gap * n; // exactly in contact
-                b.v -= off * n; // the face takes what presses on it
-                rest = restingMotion(b.v, b.w, n, surface_);
-            }
-        }
-        const Eigen::Vector3d a = sup.valid() ? rest.a : g;
-        // The earliest event within T: a face met (St5), the support's edge, rolling.
-        double tau = T;
-        Event event = Event::None;
-        FaceRef hit;
-        const double reach = r + T * b.v.norm() + 0.5 * T * T * a.norm(); // the farthest the ball gets in T
-        for (std::uint16_t item : last ? std::span<const std::uint16_t>() : layout_.itemsNear(b.p.x())) {
-            const Box& box = layout_.boxes[item];
-            // The motion in the box's frame: the faces are its coordinate planes.
-            const Eigen::Vector3d lp = box.toLocal(b.p);
-            if ((lp.cwiseAbs() - box.half).cwiseMax(0.0).squaredNorm() > reach * reach)
-                continue; // out of reach in this leg
-            const Eigen::Vector3d lv = box.rotateIn(b.v), la = box.rotateIn(a);
-            for (int face = 0; face < 6; ++face) {
-                if (sup.valid() && sup.item == item && sup.face == face)
-                    continue;
-                const int k = face >> 1;
-                const double side = (face & 1) != 0 ? 1.0 : -1.0;
-                const double d0 = side * lp[k] - box.half[k] - r; // St5
-                if (d0 < -0.5 * r)
-                    continue; // the centre is not outside this face: another face or an edge holds it
-                const double when = physical::manyballs::timeToWall(d0, side * lv[k], 0.5 * side * la[k], tau);
-                if (!(when <= tau))
-                    continue;
-                if (!overFace(box, face, lp + when * lv + 0.5 * when * when * la, 1e-12))
-                    continue;
-                if (when < tau || event == Event::None) {
-                    tau = when;
-                    event = Event::Face;
-                    hit = FaceRef{item, face};
-                }
-            }
-        }
-        if (sup.valid() && !last) {
-            const Box& box = layout_.boxes[static_cast<std::size_t>(sup.item)];
-            const Eigen::Vector3d local = box.toLocal(b.p);
-            for (int k = 0; k < 3; ++k) {
-                if (k == sup.axis())
-                    continue;
-                // The centre's box coordinate l(t) = l0 + (e_k.v) t + (e_k.a) t^2 / 2 reaches +-h_k.
-                const Eigen::Vector3d e = box.axis(k);
-                const double lv = e.dot(b.v), la = e.dot(a);
-                for (double side : {1.0, -1.0}) {
-                    const double when = physical::manyballs::timeToWall(box.half[k] - side * local[k], -side * lv,
-                                                                        -0.5 * side * la, tau);
-                    if (when < tau) {
-                        tau = when;
-                        event = Event::Leave;
-                    }
-                }
-            }
-            if (rest.rollAt < tau) {
-                tau = rest.rollAt;
-                event = Event::Roll;
-            }
+    for (int step = 0; step < kMaxEvents && t < h; ++step) {
+        const Leg leg = legMotion(layout_, surface_, r, b.p, b.v, b.w, sup);
+        LegEnd end{h - t, Event::None, FaceRef{}};
+        if (step < kMaxEvents - 1) { // the last leg flies the rest of the substep without events
+            nextFace(layout_, r, b.p, b.v, leg.a, sup, end);
+            if (sup.valid())
+                nextOnFace(layout_, b.p, b.v, leg, sup, end);
         }
         // The exact motion for tau: constant acceleration (St4), the spin at its rate.
-        b.p += tau * b.v + 0.5 * tau * tau * a;
-        b.v += tau * a;
-        if (sup.valid()) {
-            if (rest.rolling)
-                b.w = rollingSpin(b.v, b.w, n, r);
-            else
-                b.w += tau * rest.alpha;
-        }
-        t += tau;
-        switch (event) {
-        case Event::None:
-            t = h;
-            break;
-        case Event::Leave:
-            sup = FaceRef{};
-            break;
-        case Event::Roll: {
-            // Rolling: the state that keeps the angular momentum about the contact point (S4).
-            const Eigen::Vector3d vt = b.v - b.v.dot(n) * n;
-            b.v = physical::rollingVelocity(vt, b.w, n, surface_.friction.q, r);
-            b.w = rollingSpin(b.v, b.w, n, r);
-            break;
-        }
-        case Event::Face: {
-            const Box& box = layout_.boxes[static_cast<std::size_t>(hit.item)];
-            const Eigen::Vector3d fn = faceNormal(box, hit.face);
-            b.p -= faceGap(box, hit.face, b.p, r) * fn; // on the face: round-off of the root taken out
-            bool approached = false;
-            const bool canRest = fn.y() > 0.0;
-            const bool bounces = impactAlong(b.v, b.w, fn, surface_, canRest, approached);
-            if (bounces)
-                ++impacts;
-            if (approached && !bounces)
-                sup = hit; // it rests on the face from here (only faces gravity presses on stop a ball)
-            break;
-        }
-        }
+        const double tau = end.tau;
+        b.p += tau * b.v + 0.5 * tau * tau * leg.a;
+        b.v += tau * leg.a;
+        if (sup.valid())
+            b.w = leg.rest.rolling ? rollingSpin(b.v, b.w, leg.n, r) : Eigen::Vector3d(b.w + tau * leg.rest.alpha);
+        t = end.event == Event::None ? h : t + tau;
+        endLeg(layout_, surface_, r, b.p, b.v, b.w, sup, leg, end, impacts);
     }
     settle(i, impacts);
 }

@@ -40,7 +40,7 @@ Layout::Layout(double slopeRadians, int blocks_, double blockLength_, double cro
       sidewalk(sidewalk_), radius(radius_), blocks(blocks_), cars(cars_)
 {
     build(cars_, balls);
-    // A ball moves at most r/4 in a substep (street_engine.cpp), so items within 2 m + 2 r of
+    // A ball moves at most r/2 in a substep (street_engine.cpp), so items within 2 m + 2 r of
     // its x are every item it can reach.
     bin(kBinWidth + 2.0 * radius);
 }

@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: MIT
 // The contacts between the street's balls (street_engine.h point 2b).
 // 1. The balls roll and bounce in a thin layer over a long, narrow street, so the grid is one
-//    of columns: cells over (x, z) at least 2.5 r wide (contact 2 r and a skin of r/2), the
+//    of columns: cells over (x, z) at least 4 r wide (contact 2 r and a skin of 2 r), the
 //    street's whole length and width, every height in one column. A centre beyond the grid
 //    falls in its outermost column (clamping never separates two coordinates). Each column
 //    keeps a linked list of its balls, latest first: O(N) a substep, however many columns.
-// 2. Two centres closer than 2.5 r lie in the same or adjacent columns. Each ball looks for
+// 2. Two centres closer than 4 r lie in the same or adjacent columns. Each ball looks for
 //    later balls of its own column and for all the balls of the four columns after it (+x,
 //    and +z in the same x), so every pair is found once, in an order that does not depend on
 //    the threads; a height test then the exact distance keep only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
-//    more than 1e-7 r (Gauss-Seidel; 16 passes at most): eqs 2.4-2.7 along the line of
-//    centres with restitution e, Walton's impulse between rough balls (pair_friction.h), the
-//    overlap parted half each; a ball moved then meets the street again (settle). The first
-//    pass also takes the pairs that will meet within the next substep (speculative contacts).
+//    more than 1e-4 r (Gauss-Seidel; 4 passes at most): eqs 2.4-2.7 along the line of centres
+//    with restitution e, Walton's impulse between rough balls (pair_friction.h), the overlap
+//    parted half each; a ball moved then meets the street again (settle). Every pass also
+//    takes the pairs that will meet within the next substep (speculative contacts).
 #include "street_engine.h"
 
 #include "../physical/pair_friction.h"
@@ -29,10 +29,10 @@ using broadphase::Pair;
 namespace {
 
 constexpr int kPairChunk = 2048; // active balls a worker searches at a time
-// Pairs are listed within 2 r + a skin of r/2: a pass that pushes a ball into a neighbour it
+// Pairs are listed within 2 r + a skin of 2 r: a pass that pushes a ball into a neighbour it
 // did not touch after the flight still finds that pair in the list, and so does a pair that
-// will touch within the next substep (two balls close by at most r/2 in one).
-constexpr double kSkin = 1.0;
+// will touch within the next substep (two balls close by at most 2 r in one).
+constexpr double kSkin = 2.0;
 constexpr std::uint32_t kEnd = 0xffffffffu; // the end of a column's list
 
 } // namespace
@@ -131,10 +131,10 @@ bool Engine::collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const
     return bounces;
 }
 
-double Engine::resolvePairs(long long& impacts, double h, bool first)
+Engine::PassResult Engine::resolvePairs(long long& impacts, double h)
 {
     const double contact = 2.0 * settings_.radius;
-    double largest = 0.0;
+    PassResult result;
     for (const auto& list : pairs_)
         for (const Pair& pair : list) {
             Ball& a = balls_[pair.a];
@@ -142,13 +142,14 @@ double Engine::resolvePairs(long long& impacts, double h, bool first)
             Eigen::Vector3d n = b.p - a.p;
             const double d = n.norm();
             if (!(d < contact)) {
-                // Apart: in the first pass, a pair that would touch within the next substep
+                // Apart: in every pass (an earlier contact may have turned them), a pair that
+                // would touch within the next substep
                 // (|D + dV t| = 2 r for the relative position D and velocity dV, the earlier root
                 // in [0, h]) collides now, along the normal it would meet at (a speculative
                 // contact): no two balls graze or pass within a substep unseen.
                 const Eigen::Vector3d dv = b.v - a.v;
                 const double approach = n.dot(dv), vv = dv.squaredNorm();
-                if (!first || !(approach < 0.0))
+                if (!(approach < 0.0))
                     continue;
                 const double disc = approach * approach - vv * (d * d - contact * contact);
                 if (disc < 0.0)
@@ -159,19 +160,23 @@ double Engine::resolvePairs(long long& impacts, double h, bool first)
                 const Eigen::Vector3d meet = (n + t * dv) / contact;
                 if (collide(a, b, meet, dv.dot(meet)))
                     ++impacts;
+                ++result.turned;
                 continue;
             }
             n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
             const double u = (b.v - a.v).dot(n); // negative while they approach
-            if (u < 0.0 && collide(a, b, n, u))
-                ++impacts;
-            largest = std::max(largest, contact - d);
+            if (u < 0.0) {
+                if (collide(a, b, n, u))
+                    ++impacts;
+                ++result.turned;
+            }
+            result.overlap = std::max(result.overlap, contact - d);
             const double half = 0.5 * (contact - d);
             a.p -= half * n;
             b.p += half * n;
             touched_[pair.a] = touched_[pair.b] = 1;
         }
-    return largest;
+    return result;
 }
 
 } // namespace ab::street

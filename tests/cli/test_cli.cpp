@@ -102,6 +102,28 @@ private slots:
         QCOMPARE(rows[1].p[2], 298.0);
     }
 
+    // The street (stage 5) on the command line: physical and `event` without asking, spins in
+    // the trajectory (its balls are rough by default), the balls between the house fronts.
+    void runStreetStartsPhysicalAndWritesSpins()
+    {
+        const Result r = cli({"run", "street", "--set", "n=50", "--steps", "30", "--every", "30"});
+        QCOMPARE(r.status, 0);
+        std::istringstream in(r.out);
+        std::string header, line;
+        std::getline(in, header);
+        QCOMPARE(header, std::string("t,ball,x,y,z,vx,vy,vz,wx,wy,wz"));
+        int rows = 0;
+        while (std::getline(in, line)) {
+            double t = 0, x = 0, y = 0, z = 0;
+            int ball = 0;
+            QCOMPARE(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf", &t, &ball, &x, &y, &z), 5);
+            QVERIFY(std::abs(z) < 9.0 && y > 0.0 && x > 0.0); // between the house fronts, over block 1
+            ++rows;
+        }
+        QCOMPARE(rows, 100);                    // the start and t = 0.5 s, 50 balls each
+        QVERIFY2(r.err.empty(), r.err.c_str()); // healthy
+    }
+
     void everyKeepsEveryKthStateAndTEndSetsTheLength()
     {
         const Result r = cli({"run", "bounce1d", "--t-end", "100", "--every", "10"});
@@ -178,6 +200,15 @@ private slots:
         QTest::newRow("missing init file")
             << QStringList{"run", "box3d", "--init", "/nonexistent.csv"} << "--init: /nonexistent.csv: no such file";
         QTest::newRow("stray argument") << QStringList{"list", "extra"} << "unexpected argument 'extra'";
+        QTest::newRow("street with the report model")
+            << QStringList{"run", "street", "--model", "report"} << "the report's rules stop at the box";
+        QTest::newRow("street with rk4") << QStringList{"run", "street", "--integrator", "rk4"} << "rk4 is not offered";
+        QTest::newRow("street too narrow")
+            << QStringList{"run", "street", "--set", "width=0.2"} << "width: 0.2 m leaves no room";
+        QTest::newRow("street with too many cars")
+            << QStringList{"run", "street", "--set", "blocks=1", "--set", "cars=500"} << "cars: 500 do not fit";
+        QTest::newRow("bench of the box scene")
+            << QStringList{"bench", "--scene", "box3d"} << "--scene: bench times many-balls and street";
     }
 
     void badInputExitsWith2AndOneLineNamingIt()

@@ -248,6 +248,26 @@ private slots:
         QCOMPARE(c.pastFoot.front(), 1);
     }
 
+    void manyBallsLeavingAtTheFootStayHealthy()
+    {
+        // The balls that left rest where they left, out of the run: the health check does not
+        // take them for balls inside each other.
+        RunSpec spec = streetSpec({"n=400", "blocks=1", "block_length=12"});
+        const ab::street::Layout layout = ab::street::Layout::fromParams(spec.params);
+        auto sim = ab::makeSimulation(spec);
+        State s = sim->start(), next;
+        ab::diagnostics::HealthCheck health(*sim, s);
+        for (int k = 0; k < 300; ++k) {
+            sim->step(s, next);
+            health.check(s, next);
+            std::swap(s, next);
+        }
+        QVERIFY2(health.worst().level == ab::diagnostics::Health::Ok, health.worst().line().c_str());
+        const ab::street::Census c = ab::street::census(layout, s);
+        QCOMPARE_GT(c.left, 200);
+        QCOMPARE(c.left + c.onStreet, 400);
+    }
+
     void aFloodIsTheSameBitForBitOnOneOrTwoThreads()
     {
         RunSpec one = streetSpec({"n=3000", "mu=0.4", "beta=0.3"});
