@@ -10,9 +10,11 @@
 #include "panels/spin_equations.h"
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
+#include "panels/street_equations.h"
 #include "panels/transport_bar.h"
 #include "sim/pacing.h"
 #include "view/ball_view.h"
+#include "view/street_camera_bar.h"
 
 #include <QApplication>
 #include <QStatusBar>
@@ -159,12 +161,13 @@ void MainWindow::runReplaced()
                                      : QString();
     charts_->setComparison(RunDescription::runLabel(spec), compareLabel);
     charts_->configure(info, layout.balls, ball, controller_.plannedEnd(), chartUnits());
-    navigator_->setRunSection(SpinEquations::html(controller_.engine().simulation()));
+    navigator_->setRunSection(SpinEquations::html(controller_.engine().simulation()) + StreetEquations::html(spec));
     showReference();
     if (view_) {
         view_->setScene(layout, coreText(info.lengthUnit), ballColours(spec, layout.balls), framedScene_ != scene_);
         framedScene_ = scene_;
         view_->setSelected(ball);
+        streetCameras_->setVisible(layout.street != nullptr);
         view_->setGhosts({}, compareLabel.isEmpty()
                                  ? QString()
                                  : tr("solid: %1, ghost: %2").arg(RunDescription::runLabel(spec), compareLabel));
@@ -179,7 +182,7 @@ void MainWindow::runReplaced()
 ChartUnits MainWindow::chartUnits() const
 {
     const ConservationMeter meter(controller_.engine().simulation());
-    return chartUnitsOf(meter);
+    return chartUnitsOf(meter, controller_.spec());
 }
 
 void MainWindow::ballSelected(int ball)
@@ -248,7 +251,9 @@ void MainWindow::takeRunOf(MainWindow& old)
     navigator_->setPreset(scene_, old.navigator_->presetName(), old.navigator_->presetDescription());
     if (view_ && old.view_) {
         const OrbitCamera& c = old.view_->camera();
-        view_->setCameraPose(c.target(), c.yaw(), c.pitch(), c.distance());
+        view_->setCameraPose(c.target(), c.yaw(), c.pitch(), c.distance(), c.fovY());
+        if (const std::optional<StreetShot> shot = old.view_->streetShot())
+            view_->setStreetShot(*shot); // the flood shot goes on following the flood
     }
     if (lookedAt)
         transport_->lookAt(*lookedAt);

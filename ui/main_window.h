@@ -29,6 +29,7 @@ class BallView;
 class ParameterPanel;
 class StageNavigator;
 class StatusReadout;
+class StreetCameraBar;
 class TransportBar;
 class PresetActions;
 class FigureActions;
@@ -93,6 +94,8 @@ private:
     // there; false when it shows the live state.
     bool resumeFromLookedBackMoment();
     void buildMenus();
+    // The street's camera shots in the View menu (F, S, G), active in stage 5.
+    void addStreetShots(QMenu* view);
     QWidget* buildLeftPanel();
     QWidget* buildViewArea();
     // Starts the run; on refusal shows the core's message and returns it.
@@ -125,6 +128,7 @@ private:
     ChartPanel* charts_ = nullptr;
     BallView* view_ = nullptr;
     QLabel* placeholder_ = nullptr;
+    StreetCameraBar* streetCameras_ = nullptr; // over the view, in stage 5
     StatusReadout* readout_ = nullptr;
     // While playing, the panels (charts, slider, readings) are refreshed four times a
     // second, one part a tick of panelTimer_ (refreshPanelPart), so that no frame of the

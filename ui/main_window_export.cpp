@@ -107,6 +107,7 @@ void MainWindow::exportDataTo(const QString& path)
     const ChartUnits units = chartUnits();
     data.perUnitMass = units.perUnitMass;
     data.spins = units.spins;
+    data.streetBlocks = units.streetBlocks;
     const RunFacts facts{&sim.spec(), sim.dt()};
     const RunFacts compareFacts{other ? &other->simulation().spec() : nullptr, other ? other->simulation().dt() : 0.0};
     data.comments = RunDescription::comments(facts, other ? &compareFacts : nullptr, closedForm.has_value(), data.ball,

@@ -13,6 +13,7 @@
 #include "tools/tools_menu.h"
 #include "video/animation_actions.h"
 #include "view/ball_view.h"
+#include "view/street_camera_bar.h"
 
 #include <QComboBox>
 #include <QGuiApplication>
@@ -212,7 +213,17 @@ QWidget* MainWindow::buildViewArea()
             transport_->setFocus();
         });
         connect(view_, &BallView::framePainted, this, [this](double, double) { ++framesSinceFps_; });
-        return view_->container();
+        // The street's camera shots above the view, shown in stage 5 only (runReplaced).
+        auto* area = new QWidget;
+        area->setObjectName("viewArea");
+        auto* column = new QVBoxLayout(area);
+        column->setContentsMargins(0, 0, 0, 0);
+        column->setSpacing(0);
+        streetCameras_ = new StreetCameraBar(view_);
+        streetCameras_->hide();
+        column->addWidget(streetCameras_);
+        column->addWidget(view_->container(), 1);
+        return area;
     }
     // No OpenGL windows on this platform (offscreen, minimal): say so where the view would be.
     placeholder_ = new QLabel(tr("The 3D view needs OpenGL, which the '%1' platform does not offer.\n"
@@ -223,6 +234,23 @@ QWidget* MainWindow::buildViewArea()
     placeholder_->setWordWrap(true);
     placeholder_->setMinimumSize(320, 240);
     return placeholder_;
+}
+
+void MainWindow::addStreetShots(QMenu* view)
+{
+    const std::pair<StreetShot, QString> shots[] = {{StreetShot::Foot, tr("Street: from the foot")},
+                                                    {StreetShot::Side, tr("Street: from the side")},
+                                                    {StreetShot::Flood, tr("Street: follow the flood")}};
+    const char* keys[] = {"F", "S", "G"};
+    view->addSeparator();
+    for (std::size_t i = 0; i < std::size(shots); ++i) {
+        const StreetShot shot = shots[i].first;
+        QAction* a = view->addAction(shots[i].second, QKeySequence(QString::fromLatin1(keys[i])), this, [this, shot] {
+            if (view_ && scene_ == SceneId::Street)
+                view_->setStreetShot(shot);
+        });
+        a->setEnabled(view_ != nullptr);
+    }
 }
 
 void MainWindow::buildMenus()
@@ -282,6 +310,7 @@ void MainWindow::buildMenus()
         view->addAction(tr("Turntable"), QKeySequence(Qt::Key_T), this, [this](bool on) { setTurntable(on); });
     turn->setCheckable(true);
     reset->setEnabled(view_ != nullptr);
+    addStreetShots(view);
     turn->setEnabled(view_ != nullptr);
     presets_->addChartToggles(view);
 

@@ -14,6 +14,7 @@ uniform float minPixels;     // smallest drawn radius, in pixels
 uniform float pixelsPerUnit; // pixels per world unit at unit distance
 uniform int selected;        // index of the selected ball, -1 for none
 uniform int pattern;         // 1: the balls turn, each carries the beach-ball pattern turned by `turn`
+uniform float hideBeyondX;   // a ball whose centre is beyond this x has left the scene: not drawn
 
 out vec3 rayPoint;           // view-space point on the triangle
 flat out vec3 sphereCentre;  // view space
@@ -57,8 +58,8 @@ void main()
         ballPixels = 0.0;
     }
     float dist = length(c);
-    if (dist <= outer * 1.001 || c.z >= 0.0) {
-        // The eye is inside the ball or it is behind the eye: nothing to draw.
+    if (dist <= outer * 1.001 || c.z >= 0.0 || centre.x > hideBeyondX) {
+        // The eye is inside the ball, it is behind the eye, or it has left the scene: nothing to draw.
         rayPoint = vec3(0.0);
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;

@@ -12,6 +12,7 @@ uniform float minPixels;
 uniform float pixelsPerUnit;
 uniform float floorY;
 uniform float fadeHeight; // height above the floor where the cue has faded out
+uniform float hideBeyondX; // a ball beyond this x has left the scene: no cue
 
 out vec2 local;
 flat out float strength;
@@ -24,7 +25,7 @@ void main()
     float h = max(centre.y - floorY, 0.0);
     strength = 0.55 * clamp(1.0 - h / fadeHeight, 0.0, 1.0);
     local = corner;
-    if (strength <= 0.0) {
+    if (strength <= 0.0 || centre.x > hideBeyondX) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;
     }

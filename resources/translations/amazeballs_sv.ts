@@ -313,6 +313,14 @@
         <source>L = %1 %2</source>
         <translation>L = %1 %2</translation>
     </message>
+    <message>
+        <source>foot</source>
+        <translation>fot</translation>
+    </message>
+    <message>
+        <source>top, %1 %2 above the foot</source>
+        <translation>krönet, %1 %2 över foten</translation>
+    </message>
 </context>
 <context>
     <name>SpinEquations</name>
@@ -395,6 +403,49 @@
     <message>
         <source>an impact that sticks: the contact point stops (β = 0)</source>
         <translation>en stöt som fastnar: kontaktpunkten stannar (β = 0)</translation>
+    </message>
+</context>
+<context>
+    <name>StreetEquations</name>
+    <message>
+        <source>The street with these constants</source>
+        <translation>Gatan med de här konstanterna</translation>
+    </message>
+    <message>
+        <source>down a block of %1 deg: a = %2 m/s² (%3)</source>
+        <translation>nedför ett kvarter på %1 grader: a = %2 m/s² (%3)</translation>
+    </message>
+    <message>
+        <source>rolling</source>
+        <translation>rullar</translation>
+    </message>
+    <message>
+        <source>sliding</source>
+        <translation>glider</translation>
+    </message>
+    <message>
+        <source>rolling needs mu &gt;= %1; here mu = %2: a ball set down on a block %3</source>
+        <translation>att rulla kräver mu &gt;= %1; här är mu = %2: en boll som sätts ned på ett kvarter %3</translation>
+    </message>
+    <message>
+        <source>rolls</source>
+        <translation>rullar</translation>
+    </message>
+    <message>
+        <source>slides</source>
+        <translation>glider</translation>
+    </message>
+    <message>
+        <source>from rest at a block&apos;s top, a ball reaches its foot at %1 m/s, %2 km/h</source>
+        <translation>från vila vid ett kvarters krön når en boll dess fot med %1 m/s, %2 km/h</translation>
+    </message>
+    <message>
+        <source>leaving a crossing at that speed, a ball flies %1 s and lands %2 m down the next block</source>
+        <translation>när en boll lämnar en korsning med den farten flyger den %1 s och landar %2 m nedför nästa kvarter</translation>
+    </message>
+    <message>
+        <source>the street drops %1 m: %2 J per kg, the speed sqrt(2 g H) = %3 m/s if none were lost</source>
+        <translation>gatan faller %1 m: %2 J per kg, farten sqrt(2 g H) = %3 m/s om inget gick förlorat</translation>
     </message>
 </context>
 <context>
@@ -625,6 +676,14 @@
     <message>
         <source>Spin</source>
         <translation>Rotation</translation>
+    </message>
+    <message>
+        <source>Foot rate</source>
+        <translation>Takt vid foten</translation>
+    </message>
+    <message>
+        <source>Speeds</source>
+        <translation>Farter</translation>
     </message>
 </context>
 <context>
@@ -932,6 +991,18 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>PNG image (*.png);;PDF document (*.pdf);;SVG image (*.svg)</source>
         <translation>PNG-bild (*.png);;PDF-dokument (*.pdf);;SVG-bild (*.svg)</translation>
     </message>
+    <message>
+        <source>Street: from the foot</source>
+        <translation>Gatan: från foten</translation>
+    </message>
+    <message>
+        <source>Street: from the side</source>
+        <translation>Gatan: från sidan</translation>
+    </message>
+    <message>
+        <source>Street: follow the flood</source>
+        <translation>Gatan: följ floden</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::MotionChart</name>
@@ -1063,6 +1134,46 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>ω (rad/%1)</source>
         <translation>ω (rad/%1)</translation>
     </message>
+    <message>
+        <source>Balls passing the foot of each block</source>
+        <translation>Bollar som passerar varje kvarters fot</translation>
+    </message>
+    <message>
+        <source>balls per %1</source>
+        <translation>bollar per %1</translation>
+    </message>
+    <message>
+        <source>Speeds of the balls on the street</source>
+        <translation>Farterna hos bollarna på gatan</translation>
+    </message>
+    <message>
+        <source>speed (%1/%2)</source>
+        <translation>fart (%1/%2)</translation>
+    </message>
+    <message>
+        <source>10th percentile</source>
+        <translation>10:e percentilen</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>medianfart</translation>
+    </message>
+    <message>
+        <source>90th percentile</source>
+        <translation>90:e percentilen</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>snabbast</translation>
+    </message>
+    <message>
+        <source>foot of the street</source>
+        <translation>gatans fot</translation>
+    </message>
+    <message>
+        <source>foot of block %1</source>
+        <translation>kvarter %1:s fot</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ParameterPanel</name>
@@ -1185,6 +1296,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Spin (balls that turn, physical model)</source>
         <translation>Rotation (bollar som snurrar, fysikalisk modell)</translation>
     </message>
+    <message>
+        <source>Balls passing the foot of each block (street)</source>
+        <translation>Bollar som passerar varje kvarters fot (gatan)</translation>
+    </message>
+    <message>
+        <source>Speeds of the balls on the street (street)</source>
+        <translation>Farterna hos bollarna på gatan (gatan)</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::RunOptionsPanel</name>
@@ -1291,6 +1410,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>report: at the end of each frame (Appendix D)</source>
         <translation>rapporten: i slutet av varje bildruta (bilaga D)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s rules stop at the box; the street is the physical model&apos;s (report 3.1)</source>
+        <translation>Rapportens regler slutar vid kuben; gatan hör till den fysikaliska modellen (rapporten 3.1)</translation>
     </message>
 </context>
 <context>
@@ -1659,6 +1782,45 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>%1 per step</source>
         <translation>%1 per steg</translation>
+    </message>
+    <message>
+        <source>%1 balls on the street, %2 past the first block&apos;s foot, %3 left at the foot; fastest %4 m/s</source>
+        <translation>%1 bollar på gatan, %2 förbi första kvarterets fot, %3 har lämnat vid foten; snabbast %4 m/s</translation>
+    </message>
+    <message>
+        <source>Balls on the street</source>
+        <translation>Bollar på gatan</translation>
+    </message>
+</context>
+<context>
+    <name>ab::ui::StreetCameraBar</name>
+    <message>
+        <source>Camera:</source>
+        <translation>Kamera:</translation>
+    </message>
+    <message>
+        <source>Low on the road past the foot, looking up the street: the advert&apos;s shot (F)</source>
+        <translation>Lågt på gatan bortom foten, med blicken uppför gatan: reklamfilmens bild (F)</translation>
+    </message>
+    <message>
+        <source>The street in profile, the near houses cut away (S)</source>
+        <translation>Gatan i profil, de närmaste husen bortskurna (S)</translation>
+    </message>
+    <message>
+        <source>Ahead of the front of the flood, moving down the hill with it (G)</source>
+        <translation>Framför flodens front, på väg nedför backen med den (G)</translation>
+    </message>
+    <message>
+        <source>Foot</source>
+        <translation>Foten</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Sidan</translation>
+    </message>
+    <message>
+        <source>Flood</source>
+        <translation>Floden</translation>
     </message>
 </context>
 <context>
@@ -2782,6 +2944,170 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Ball 1 spins about the vertical at 4 rad/s and runs at 5 m/s into ball 2, which rests without spin; gravity is off, so nothing else touches them until the walls, 5.7 s later. At the contact friction grips (mu = 0.5, beta = 0): one tangential impulse acts on the two balls at their one contact point, in opposite directions, so their momentum is kept (they move apart sideways at 1.14 m/s each) and both spins change by the same amount in the same sense (S11-S12): ball 1 keeps 2.57 rad/s and ball 2 starts to spin at -1.43 rad/s, like a gear driven by the first. Choose ball 2 in the charts to follow its spin.</source>
         <translation>Boll 1 snurrar kring den lodräta axeln med 4 rad/s och rullar med 5 m/s in i boll 2, som ligger stilla utan rotation; tyngdkraften är avstängd, så inget annat rör dem förrän väggarna, 5.7 s senare. Vid kontakten griper friktionen (mu = 0.5, beta = 0): en enda tangentiell impuls verkar på de två bollarna i deras gemensamma kontaktpunkt, i motsatta riktningar, så rörelsemängden bevaras (de glider isär i sidled med 1.14 m/s var) och båda rotationerna ändras lika mycket åt samma håll (S11-S12): boll 1 behåller 2.57 rad/s och boll 2 börjar snurra med -1.43 rad/s, som ett kugghjul som drivs av det första. Välj boll 2 i diagrammen för att följa dess rotation.</translation>
+    </message>
+    <message>
+        <source>&quot;Originally gravity, slope and rotation were to give the balls their initial speed and direction.&quot; Here the balls start almost at rest (speed) above the top block.</source>
+        <translation>&quot;Ursprungligen skulle gravitation, lutning och rotation ge bollarna deras begynnelsehastighet och riktning.&quot; Här startar bollarna nästan i vila (speed) ovanför det översta kvarteret.</translation>
+    </message>
+    <message>
+        <source>&quot;The basic idea was that the balls would bounce down a street like the picture from Sony&apos;s advert; the simulation was done in a simplified environment, a box, to establish that the basic functions work.&quot; The report&apos;s rules have no slope, kerb or crossing: this stage is the physical model&apos;s.</source>
+        <translation>&quot;Grundidén var att bollarna skulle studsa nedför en gata som på bilden från Sonys reklamfilm; simuleringen gjordes i en förenklad miljö, en kub, för att visa att de grundläggande funktionerna fungerar.&quot; Rapportens regler har ingen lutning, trottoarkant eller korsning: den här etappen hör till den fysikaliska modellen.</translation>
+    </message>
+    <message>
+        <source>3.1, Figure 1</source>
+        <translation>3.1, Figur 1</translation>
+    </message>
+    <message>
+        <source>Balls down a steep street</source>
+        <translation>Bollar nedför en brant gata</translation>
+    </message>
+    <message>
+        <source>St1</source>
+        <translation>St1</translation>
+    </message>
+    <message>
+        <source>St1-St2</source>
+        <translation>St1-St2</translation>
+    </message>
+    <message>
+        <source>St4</source>
+        <translation>St4</translation>
+    </message>
+    <message>
+        <source>The report&apos;s basic idea: balls bouncing down a steep street, as in Sony&apos;s advert, set going by gravity, slope and rotation. A hopper above the top releases them; they roll, slide and jump down the blocks, over the flat crossings, between kerbs and house fronts, and leave at the foot. The report built the box to test its functions and never reached the street, so only the physical model has it.</source>
+        <translation>Rapportens grundidé: bollar som studsar nedför en brant gata, som i Sonys reklamfilm, satta i rörelse av gravitation, lutning och rotation. En behållare ovanför krönet släpper dem; de rullar, glider och hoppar nedför kvarteren, över de plana korsningarna, mellan trottoarkanter och husfasader, och lämnar gatan vid dess fot. Rapporten byggde kuben för att pröva sina funktioner och nådde aldrig gatan, så bara den fysikaliska modellen har den.</translation>
+    </message>
+    <message>
+        <source>a ball rolling without slipping down a block</source>
+        <translation>en boll som rullar utan att glida nedför ett kvarter</translation>
+    </message>
+    <message>
+        <source>a ball sliding down a block, its spin growing</source>
+        <translation>en boll som glider nedför ett kvarter medan dess rotation växer</translation>
+    </message>
+    <message>
+        <source>a ball that leaves a crossing&apos;s edge flies as a projectile</source>
+        <translation>en boll som lämnar en korsnings kant flyger som en projektil</translation>
+    </message>
+    <message>
+        <source>an impact whose rebound would rise less than this ends in contact: the ball rolls or slides on</source>
+        <translation>en stöt vars studs skulle stiga mindre än så slutar i kontakt: bollen rullar eller glider vidare</translation>
+    </message>
+    <message>
+        <source>ball radius (a superball: 3 cm)</source>
+        <translation>bollens radie (en studsboll: 3 cm)</translation>
+    </message>
+    <message>
+        <source>cars: %1 do not fit along these blocks; they hold at most %2</source>
+        <translation>cars: %1 får inte plats längs de här kvarteren; de rymmer högst %2</translation>
+    </message>
+    <message>
+        <source>cars: a roadway of %1 m is too narrow for parked cars</source>
+        <translation>cars: en körbana på %1 m är för smal för parkerade bilar</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>grader</translation>
+    </message>
+    <message>
+        <source>eq 2.3, St5</source>
+        <translation>ekv. 2.3, St5</translation>
+    </message>
+    <message>
+        <source>every impact, with the street or a ball</source>
+        <translation>varje stöt, mot gatan eller mot en boll</translation>
+    </message>
+    <message>
+        <source>friction holds a ball set down on a block: it rolls (St1)</source>
+        <translation>friktionen håller en boll som sätts ned på ett kvarter: den rullar (St1)</translation>
+    </message>
+    <message>
+        <source>height of the kerbs: the sidewalks stand this far above the road</source>
+        <translation>trottoarkanternas höjd: trottoarerna ligger så här högt över körbanan</translation>
+    </message>
+    <message>
+        <source>it lands when its centre is r from the road&apos;s plane: the earliest root</source>
+        <translation>den landar när dess centrum är r från körbanans plan: den tidigaste roten</translation>
+    </message>
+    <message>
+        <source>length of a block along the road</source>
+        <translation>ett kvarters längd längs gatan</translation>
+    </message>
+    <message>
+        <source>length of each flat crossing (the top one too); the flood leaves its lower edge as projectiles</source>
+        <translation>längden på varje plan korsning (även den översta); floden lämnar dess nedre kant som projektiler</translation>
+    </message>
+    <message>
+        <source>number of balls released from the hopper above the top</source>
+        <translation>antal bollar som släpps från behållaren ovanför krönet</translation>
+    </message>
+    <message>
+        <source>parked cars (boxes) along the kerbs, spread over the blocks</source>
+        <translation>parkerade bilar (lådor) längs trottoarkanterna, fördelade över kvarteren</translation>
+    </message>
+    <message>
+        <source>restitution of every impact, with the street and between balls (a superball: 0.8-0.9)</source>
+        <translation>studskoefficient för varje stöt, mot gatan och mellan bollar (en studsboll: 0,8-0,9)</translation>
+    </message>
+    <message>
+        <source>road blocks, with a flat crossing between two</source>
+        <translation>kvarter av gata, med en plan korsning mellan två</translation>
+    </message>
+    <message>
+        <source>roadway between the kerbs</source>
+        <translation>körbanan mellan trottoarkanterna</translation>
+    </message>
+    <message>
+        <source>seed of the start positions and velocities</source>
+        <translation>frö för startpositionerna och -hastigheterna</translation>
+    </message>
+    <message>
+        <source>slope of every block (17 deg: a 31 % grade, San Francisco&apos;s steepest)</source>
+        <translation>lutning för varje kvarter (17 grader: 31 % stigning, San Franciscos brantaste)</translation>
+    </message>
+    <message>
+        <source>start velocities: each component uniform in [-speed, speed] (gravity and slope do the rest)</source>
+        <translation>starthastigheter: varje komponent likformigt fördelad i [-speed, speed] (gravitation och lutning gör resten)</translation>
+    </message>
+    <message>
+        <source>width of each sidewalk, between kerb and house fronts</source>
+        <translation>bredden på varje trottoar, mellan trottoarkant och husfasader</translation>
+    </message>
+    <message>
+        <source>width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)</source>
+        <translation>width: %1 m lämnar inget utrymme för bollar med radien %2 m (width måste vara minst 8 r)</translation>
+    </message>
+    <message>
+        <source>10,000 superballs with restitution 0.95 and tangential restitution 0.9 (Garwin&apos;s superball: the contact point&apos;s slip reverses at each impact, so spin turns into speed and back). They keep bouncing high all the way down, jump far off each crossing, and hit the house fronts; the energy chart shows translation and rotation trading while the total falls only slowly as the balls drop.</source>
+        <translation>10 000 superbollar med studskoefficienten 0.95 och den tangentiella studskoefficienten 0.9 (Garwins superboll: kontaktpunktens glidning vänds vid varje stöt, så rotation blir fart och tillbaka). De fortsätter att studsa högt hela vägen ned, hoppar långt från varje korsning och träffar husfasaderna; energidiagrammet visar translation och rotation som byter energi medan summan bara sjunker långsamt när bollarna faller.</translation>
+    </message>
+    <message>
+        <source>One ball rolling down one block: the 5/7 rule on a slope</source>
+        <translation>En boll som rullar nedför ett kvarter: 5/7-regeln i en backe</translation>
+    </message>
+    <message>
+        <source>One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = 0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street.</source>
+        <translation>En boll som sätts ned på ett kvarter med 17 graders lutning utan studs (e = 0). När den har landat håller friktionen (mu = 0.5, mer än q tan(theta)/(1 + q) = 0.087) den rullande utan glidning: den accelererar med a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 grader = 2.051 m/s^2, inte med de 2.871 m/s^2 som en boll som glider utan friktion får, och r w = v hela vägen (ekv. St1). Hastighetsdiagrammet stiger i en rät linje; vid foten, 80 m längre ned, rullar den med ungefär 18 m/s och lämnar gatan.</translation>
+    </message>
+    <message>
+        <source>Sony&apos;s advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper over the top of three 17 deg blocks with parked cars along the kerbs, restitution 0.85 and grippy rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away.</source>
+        <translation>Sonys reklamfilm släppte 250 000 superbollar nedför en gata i San Francisco. Här faller de från behållaren ovanför krönet av tre kvarter med 17 graders lutning och parkerade bilar längs trottoarkanterna, studskoefficient 0.85 och greppigt gummi (mu = 0.6, beta = 0.4). Sedd från backens fot kommer floden nedför första kvarteret inom 5 s och hoppar vid varje korsning; fartfördelningen breddas när fronten drar ifrån.</translation>
+    </message>
+    <message>
+        <source>Superballs: e and beta near 1</source>
+        <translation>Superbollar: e och beta nära 1</translation>
+    </message>
+    <message>
+        <source>Ten thousand superballs down a steep street</source>
+        <translation>Tiotusen superbollar nedför en brant gata</translation>
+    </message>
+    <message>
+        <source>The advert: a quarter of a million superballs</source>
+        <translation>Reklamfilmen: en kvarts miljon superbollar</translation>
+    </message>
+    <message>
+        <source>The report&apos;s basic idea (chapter 3.1): balls bouncing down a steep street like Sony&apos;s advert, set going by gravity and slope. 10,000 balls of 3 cm drop from a hopper over the top of a 17 deg street (a 31 % grade) of three 80 m blocks with flat crossings between them. They land, roll and bounce down block 1 (a rolling ball gains 5/7 g sin 17 deg = 2.05 m/s^2), jump where each crossing ends, and leave at the foot; the balls-per-second chart counts them past each block&apos;s foot.</source>
+        <translation>Rapportens grundidé (kapitel 3.1): bollar som studsar nedför en brant gata som i Sonys reklamfilm, satta i rörelse av gravitation och lutning. 10 000 bollar på 3 cm faller från en behållare ovanför krönet av en gata med 17 graders lutning (31 % stigning) och tre kvarter på 80 m med plana korsningar emellan. De landar, rullar och studsar nedför kvarter 1 (en rullande boll ökar farten med 5/7 g sin 17 grader = 2.05 m/s^2), hoppar där varje korsning slutar och lämnar gatan vid foten; diagrammet med bollar per sekund räknar dem förbi varje kvarters fot.</translation>
     </message>
 </context>
 <context>

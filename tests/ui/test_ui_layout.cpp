@@ -156,6 +156,9 @@ void checkHeader(const QHeaderView* header, QStringList& cut)
 
 void checkTabs(const QTabBar* tabs, QStringList& cut)
 {
+    // Tabs that run past the bar's edge must scroll there, or the last ones are out of reach.
+    if (tabs->count() > 0 && tabs->tabRect(tabs->count() - 1).right() > tabs->width() && !tabs->usesScrollButtons())
+        cut << QStringLiteral("%1: tabs past the edge, without scroll buttons").arg(where(tabs));
     const QFontMetrics fm(tabs->font());
     for (int i = 0; i < tabs->count(); ++i) {
         const QString text = shown(tabs->tabText(i));
@@ -378,6 +381,10 @@ private slots:
         QTest::newRow("stage 2") << SceneId::Box3d << (motion + difference);
         QTest::newRow("stage 3") << SceneId::TwoBalls << (motion + QStringList{"export-momentum"} + difference);
         QTest::newRow("stage 4") << SceneId::ManyBalls << (motion + QStringList{"export-momentum", "export-activity"});
+        // The street's balls turn (mu > 0): the spin chart; and its own flood charts.
+        QTest::newRow("stage 5") << SceneId::Street
+                                 << QStringList{"export-position", "export-velocity",  "export-spin",
+                                                "export-energy",   "export-foot-rate", "export-speeds"};
     }
     void exportMenuOffersTheStagesChartsOnly()
     {

@@ -223,10 +223,12 @@ private slots:
             QCOMPARE(a->toolTip(), QString::fromStdString(b.preset.description));
         }
         QCOMPARE(keys.size(), qsizetype(ab::builtinPresets().size()));
-        QCOMPARE(sections.size(), qsizetype(4)); // one section per stage
+        QCOMPARE(sections.size(), qsizetype(ab::allScenes().size())); // one section per stage
         QVERIFY(sections.front().startsWith("Stage 1"));
-        // Every stage has its preset "as in the report".
-        for (const char* key : {"bounce1d-report", "box3d-report", "two-balls-report", "many-balls-report"})
+        QVERIFY(sections.back().startsWith("Stage 5"));
+        // Every stage of the report has its preset "as in the report"; the street, the
+        // physical model's, its own.
+        for (const char* key : {"bounce1d-report", "box3d-report", "two-balls-report", "many-balls-report", "street"})
             QVERIFY2(keys.contains(key), key);
     }
 

@@ -102,7 +102,8 @@ private slots:
         const SceneId id = SceneId(scene);
         MainWindow w;
         w.showScene(id);
-        QCOMPARE(w.parameters()->shownKeys(), expectedKeys(id, ab::ModelKind::Report));
+        // The stage opens on its default model: the report's, the physical one on the street.
+        QCOMPARE(w.parameters()->shownKeys(), expectedKeys(id, ab::RunSpec(id).model));
         if (id == SceneId::Bounce1d) {
             // One axis: every constant is a number, no x/z vector anywhere.
             for (const std::string& key : w.parameters()->shownKeys())

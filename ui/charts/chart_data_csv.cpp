@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "chart_data_csv.h"
 
+#include "street_sample.h"
+
 #include <charconv>
 #include <string_view>
 
@@ -45,6 +47,7 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
     static const char* names[3] = {"x", "y", "z"};
     const std::vector<int> shown = d.axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
     const Units u = unitsOf(d);
+    const std::vector<int> feet = footBlocks(d.streetBlocks);
     for (const std::string& line : d.comments)
         out << "# " << line << "\n";
     // The columns after t and ball, once for the run and once, prefixed, for the comparison.
@@ -58,12 +61,17 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
         for (const char* c : {"momentum_x", "momentum_y", "momentum_z"})
             out << "," << prefix << c << " [" << u.momentum << "]";
         out << "," << prefix << "moving [balls]," << prefix << "impacts [1]";
-        if (!d.spins)
-            return;
-        for (int a = 0; a < 3; ++a)
-            out << "," << prefix << "w" << names[a] << " [" << u.spin << "]";
-        for (const char* c : {"energy_translation", "energy_rotation"})
-            out << "," << prefix << c << " [" << u.energy << "]";
+        if (d.spins) {
+            for (int a = 0; a < 3; ++a)
+                out << "," << prefix << "w" << names[a] << " [" << u.spin << "]";
+            for (const char* c : {"energy_translation", "energy_rotation"})
+                out << "," << prefix << c << " [" << u.energy << "]";
+        }
+        for (int block : feet)
+            out << "," << prefix << "past_foot_" << block + 1 << " [balls]";
+        if (d.streetBlocks > 0)
+            for (const char* c : {"speed_p10", "speed_median", "speed_p90", "speed_max"})
+                out << "," << prefix << c << " [" << u.speed << "]";
     };
     out << "t [" << u.t << "],ball";
     header("");
@@ -92,16 +100,22 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
             w.put(m.momentum(a)[i]);
         w.put(static_cast<long long>(m.moving()[i]));
         w.put(m.impacts()[i]);
-        if (!d.spins)
-            return;
-        for (int a = 0; a < 3; ++a)
-            w.put(m.w(a)[i]);
-        w.put(m.translation()[i]);
-        w.put(m.rotation()[i]);
+        if (d.spins) {
+            for (int a = 0; a < 3; ++a)
+                w.put(m.w(a)[i]);
+            w.put(m.translation()[i]);
+            w.put(m.rotation()[i]);
+        }
+        for (std::size_t k = 0; k < feet.size(); ++k)
+            w.put(static_cast<long long>(m.pastFoot(int(k))[i]));
+        if (d.streetBlocks > 0)
+            for (int k = 0; k < kSpeedLines; ++k)
+                w.put(m.speed(k)[i]);
     };
     const MotionTrack& run = *d.run;
     const MotionTrack* compare = d.comparison;
-    const std::size_t compareColumns = 1 + 2 * shown.size() + 9 + (d.spins ? 5 : 0);
+    const std::size_t compareColumns = 1 + 2 * shown.size() + 9 + (d.spins ? 5 : 0) + feet.size() +
+                                       (d.streetBlocks > 0 ? std::size_t(kSpeedLines) : 0);
     std::size_t j = 0; // the comparison's last sample at or before the row's time
     for (std::size_t i = 0; i < run.size(); ++i) {
         const double t = run.t()[i];

@@ -8,7 +8,9 @@
 //   energy_potential, energy_spring (of all balls, per unit mass or with the physical
 //   model's masses), momentum_x, _y, _z, moving (balls), impacts (since the start), and
 //   where the balls turn wx, wy, wz (the ball's angular velocity, rad/T) and
-//   energy_translation, energy_rotation (the kinetic energy's parts);
+//   energy_translation, energy_rotation (the kinetic energy's parts); on the street
+//   past_foot_<k> (balls past the foot of each charted block k, 1-based) and speed_p10,
+//   speed_median, speed_p90, speed_max (of the balls on the street);
 //   with a closed form: x_closed_form ... vz_closed_form at the row's time (empty where it
 //   does not apply); with a comparison run: compare_t and the same columns prefixed
 //   `compare_`, from the comparison's last sample at or before the row's time (the same
@@ -33,6 +35,7 @@ struct ChartData {
     std::string timeUnit = "s", lengthUnit = "m";
     bool perUnitMass = true;
     bool spins = false;                // the balls turn: wx, wy, wz, energy_translation, energy_rotation after the rest
+    int streetBlocks = 0;              // the street's blocks: its counts and speeds after those
     std::vector<std::string> comments; // without the "# "
 };
 

@@ -8,25 +8,33 @@ namespace ab::ui {
 namespace {
 
 constexpr std::pair<ChartKind, std::string_view> chartKeys[] = {
-    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"}, {ChartKind::Energy, "energy"},
-    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"}, {ChartKind::Difference, "difference"},
-    {ChartKind::Spin, "spin"}};
+    {ChartKind::Position, "position"}, {ChartKind::Velocity, "velocity"},  {ChartKind::Energy, "energy"},
+    {ChartKind::Momentum, "momentum"}, {ChartKind::Activity, "activity"},  {ChartKind::Difference, "difference"},
+    {ChartKind::Spin, "spin"},         {ChartKind::FootRate, "foot-rate"}, {ChartKind::Speeds, "speeds"}};
 
 } // namespace
 
 const std::vector<ChartKind>& allChartKinds()
 {
     // In the order the chart panel shows them: the ball's own motion (spin beside its
-    // velocity), then what the whole scene conserves.
-    static const std::vector<ChartKind> kinds = {ChartKind::Position,  ChartKind::Velocity, ChartKind::Spin,
-                                                 ChartKind::Energy,    ChartKind::Momentum, ChartKind::Activity,
-                                                 ChartKind::Difference};
+    // velocity), then what the whole scene conserves, then the street's flood.
+    static const std::vector<ChartKind> kinds = {ChartKind::Position,   ChartKind::Velocity, ChartKind::Spin,
+                                                 ChartKind::Energy,     ChartKind::Momentum, ChartKind::Activity,
+                                                 ChartKind::Difference, ChartKind::FootRate, ChartKind::Speeds};
     return kinds;
 }
 
 ChartUnits chartUnitsOf(const ConservationMeter& meter)
 {
     return ChartUnits{meter.perUnitMass(), meter.hasSpring(), meter.turns()};
+}
+
+ChartUnits chartUnitsOf(const ConservationMeter& meter, const RunSpec& spec)
+{
+    ChartUnits units = chartUnitsOf(meter);
+    if (spec.scene == SceneId::Street)
+        units.streetBlocks = static_cast<int>(spec.params.integer("blocks"));
+    return units;
 }
 
 bool chartApplies(ChartKind kind, SceneId scene, const ChartUnits& units)
@@ -48,6 +56,9 @@ bool chartApplies(ChartKind kind, SceneId scene)
         return scene == SceneId::TwoBalls || scene == SceneId::ManyBalls;
     case ChartKind::Activity:
         return scene == SceneId::ManyBalls;
+    case ChartKind::FootRate:
+    case ChartKind::Speeds:
+        return scene == SceneId::Street;
     default:
         return true;
     }

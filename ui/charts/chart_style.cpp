@@ -17,6 +17,12 @@ const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c
 const QColor energyColours[5] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
                                  QColor(0x8c, 0x56, 0x4b), QColor(0xc0, 0x39, 0x2b)};
 const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
+// The street's: one hue per block's foot, down the hill; the speed percentiles in deepening
+// blues, the fastest ball in red.
+const QColor footColours[5] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x2c, 0xa0, 0x2c),
+                               QColor(0x94, 0x67, 0xbd), QColor(0xd6, 0x27, 0x28)};
+const QColor speedColours[4] = {QColor(0x6b, 0xae, 0xd6), QColor(0x21, 0x71, 0xb5), QColor(0x08, 0x30, 0x6b),
+                                QColor(0xd6, 0x27, 0x28)};
 // The comparison's family: each colour mixed half and half with a dark violet, so that
 // its lines are darker and of another hue than the run's they lie on.
 const QColor comparisonTint(0x4b, 0x00, 0x82);
@@ -34,6 +40,10 @@ QColor baseColour(ChartKind kind, int line)
         return energyColours[std::clamp(line, 0, 4)];
     case ChartKind::Activity:
         return activityColours[std::clamp(line, 0, 1)];
+    case ChartKind::FootRate:
+        return footColours[std::clamp(line, 0, 4)];
+    case ChartKind::Speeds:
+        return speedColours[std::clamp(line, 0, 3)];
     default:
         return axisColours[std::clamp(line, 0, 2)];
     }

@@ -168,6 +168,14 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     case ChartKind::Activity:
         shownAxes_ = {0, 1};
         break;
+    case ChartKind::FootRate:
+        shownAxes_.clear();
+        for (std::size_t i = 0; i < footBlocks(units.streetBlocks).size(); ++i)
+            shownAxes_.push_back(int(i));
+        break;
+    case ChartKind::Speeds:
+        shownAxes_ = {0, 1, 2, 3};
+        break;
     }
     const QString time = coreText(scene.timeUnit);
     const QString length = coreText(scene.lengthUnit);
@@ -216,6 +224,19 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         setTitle(tr("Spin of %1").arg(who));
         valueAxis_->setTitleText(tr("\u03c9 (rad/%1)").arg(time));
         break;
+    case ChartKind::FootRate:
+        setTitle(tr("Balls passing the foot of each block"));
+        valueAxis_->setTitleText(tr("balls per %1").arg(time));
+        nameFeet(names, units.streetBlocks);
+        break;
+    case ChartKind::Speeds:
+        setTitle(tr("Speeds of the balls on the street"));
+        valueAxis_->setTitleText(tr("speed (%1/%2)").arg(length, time));
+        names[0] = tr("10th percentile");
+        names[1] = tr("median");
+        names[2] = tr("90th percentile");
+        names[3] = tr("fastest");
+        break;
     }
     timeAxis_->setTitleText(tr("t (%1)").arg(time));
     for (int a = 0; a < maxLines; ++a) {
@@ -246,6 +267,13 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         setNiceRange(rateAxis_, 0.0, 1.0, 6);
     sampleReference();
     placeCursor();
+}
+
+void MotionChart::nameFeet(QString* names, int blocks)
+{
+    const std::vector<int> feet = footBlocks(blocks);
+    for (std::size_t i = 0; i < feet.size(); ++i)
+        names[i] = feet[i] + 1 == blocks ? tr("foot of the street") : tr("foot of block %1").arg(feet[i] + 1);
 }
 
 void MotionChart::setTimeSpan(double tEnd)
@@ -292,6 +320,13 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
         // several impacts at the report's 150 balls, short enough to show how they die out.
         rate_ = impactRate(track, tEnd_ / 100.0);
         return rate_;
+    case ChartKind::FootRate:
+        // Counted over the last 1/60 of the planned run (half a second of the street's
+        // 30 s): the flood's front passes a foot in a few seconds.
+        rate_ = passingRate(track.t(), track.pastFoot(line), tEnd_ / 60.0);
+        return rate_;
+    case ChartKind::Speeds:
+        return track.speed(line);
     }
     throw std::logic_error("chart kind without data");
 }

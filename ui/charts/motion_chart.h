@@ -33,17 +33,18 @@ class QValueAxis;
 
 namespace ab::ui {
 
-enum class ChartKind { Position, Velocity, Energy, Momentum, Activity, Difference, Spin };
+enum class ChartKind { Position, Velocity, Energy, Momentum, Activity, Difference, Spin, FootRate, Speeds };
 
 const std::vector<ChartKind>& allChartKinds();
-// "position", "velocity", "energy", "momentum", "activity", "difference", "spin"
+// "position", "velocity", "energy", "momentum", "activity", "difference", "spin",
+// "foot-rate", "speeds"
 std::string_view chartKey(ChartKind kind);
 std::optional<ChartKind> parseChartKind(std::string_view key);
 // Whether the chart means something for the scene: momentum needs two balls or more
 // (one ball's momentum only shows gravity and the walls), activity needs many. The
 // difference chart applies to every scene but is drawn only beside a comparison run or
 // a closed form (differenceDrawable). The spin chart needs balls that turn: ask
-// chartApplies with the run's ChartUnits.
+// chartApplies with the run's ChartUnits. The foot-rate and speed charts are the street's.
 bool chartApplies(ChartKind kind, SceneId scene);
 bool differenceDrawable(bool comparing, bool closedForm);
 
@@ -53,10 +54,13 @@ struct ChartUnits {
     bool spring = false;     // the spring floor: its energy gets a line of its own
     bool spins = false;      // the balls turn: kinetic energy splits into translation and rotation, and
                              // the spin chart applies
+    int streetBlocks = 0;    // the street's blocks (stage 5): the foot-rate chart's lines follow footBlocks()
 };
 
 // What `meter` measures the run's charts with.
 ChartUnits chartUnitsOf(const ConservationMeter& meter);
+// The same for the run `spec` describes: the street's blocks too.
+ChartUnits chartUnitsOf(const ConservationMeter& meter, const RunSpec& spec);
 // chartApplies for the run the units are of: the spin chart only where the balls turn.
 bool chartApplies(ChartKind kind, SceneId scene, const ChartUnits& units);
 // chartApplies for the run `spec` describes (its balls turn: ballsTurn).
@@ -107,7 +111,8 @@ public:
 
     // The lines drawn. Position, velocity: the axes, {1} for a vertical-only scene, {0,
     // 1, 2} otherwise; momentum and spin {0, 1, 2} (x, y, z; spin {1} for a vertical-only
-    // scene). Energy: 0 kinetic (of translation where the balls turn), 1 potential,
+    // scene). Foot rate: one line per charted block (footBlocks); speeds: the 10th, 50th
+    // and 90th percentiles and the fastest. Energy: 0 kinetic (of translation where the balls turn), 1 potential,
     // 2 total, 3 spring (when the spring floor is on), 4 rotation (where the balls turn). Activity: 0 moving balls
     // (left axis), 1 impacts per unit of time (right axis). Difference: the position axes.
     const std::vector<int>& shownAxes() const { return shownAxes_; }
@@ -139,6 +144,8 @@ private:
     void updateRateRange(double hi);
     void placeCursor();
     void applyNames();
+    // The foot-rate chart's line names, for a street of `blocks` blocks.
+    static void nameFeet(QString* names, int blocks);
     // The lines of `track` into `series`, widening the axes to hold them.
     void drawTrack(const MotionTrack& track, int columns, const std::array<QLineSeries*, maxLines>& series);
     void sampleReference();

@@ -26,6 +26,10 @@ template <typename F> void MotionTrack::forEachColumn(F&& f)
     f(energy_);
     f(moving_);
     f(impacts_);
+    for (auto& column : feet_)
+        f(column);
+    for (auto& column : speeds_)
+        f(column);
 }
 
 void MotionTrack::clear()
@@ -42,6 +46,12 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
 
 void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
                       const Eigen::Vector3d& w, const ConservationSample& scene)
+{
+    add(step, t, p, v, w, scene, StreetSample{});
+}
+
+void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+                      const Eigen::Vector3d& w, const ConservationSample& scene, const StreetSample& street)
 {
     if (!step_.empty() && step <= step_.back())
         throw std::logic_error("motion samples out of order");
@@ -63,6 +73,10 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
     energy_.push_back(scene.energy.total());
     moving_.push_back(static_cast<double>(scene.moving));
     impacts_.push_back(scene.impacts);
+    for (std::size_t k = 0; k < feet_.size(); ++k)
+        feet_[k].push_back(street.pastFoot[k]);
+    for (std::size_t k = 0; k < speeds_.size(); ++k)
+        speeds_[k].push_back(street.speed[k]);
     while (t_.size() > capacity_)
         thin();
 }

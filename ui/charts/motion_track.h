@@ -5,6 +5,8 @@
 // steps are kept at twice the stride, so a long run is thinned evenly, never cut short.
 #pragma once
 
+#include "street_sample.h"
+
 #include "core/diagnostics/conservation.h"
 
 #include <Eigen/Core>
@@ -27,6 +29,9 @@ public:
     // The same, with the ball's angular velocity `w` (a ball that turns).
     void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& w,
              const ConservationSample& scene);
+    // The same, with what the street's charts draw (stage 5).
+    void add(long long step, double t, const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& w,
+             const ConservationSample& scene, const StreetSample& street);
 
     // Drops every sample of step `step` and later (a run forked back to that step).
     void truncateFrom(long long step);
@@ -52,6 +57,10 @@ public:
     const std::vector<double>& momentum(int axis) const { return momentum_[static_cast<std::size_t>(axis)]; }
     const std::vector<double>& moving() const { return moving_; }
     const std::vector<long long>& impacts() const { return impacts_; } // since the start
+    // The street's (zero elsewhere): balls past the foot of charted block `line`
+    // (footBlocks), and the speed percentiles (StreetSample::speed).
+    const std::vector<double>& pastFoot(int line) const { return feet_[static_cast<std::size_t>(line)]; }
+    const std::vector<double>& speed(int line) const { return speeds_[static_cast<std::size_t>(line)]; }
 
 private:
     void thin();
@@ -64,6 +73,8 @@ private:
     std::array<std::vector<double>, 3> p_, v_, w_, momentum_;
     std::vector<double> kinetic_, translation_, rotation_, potential_, spring_, energy_, moving_;
     std::vector<long long> impacts_;
+    std::array<std::vector<double>, kFootLines> feet_;
+    std::array<std::vector<double>, kSpeedLines> speeds_;
 };
 
 // Impacts per unit of time at every kept sample: the impacts counted over the window

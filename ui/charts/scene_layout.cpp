@@ -53,6 +53,24 @@ SceneLayout centredBoxLayout(const ParamValues& v)
     return l;
 }
 
+// Stage 5: the street, x down it from the top crossing's upper end to the open foot, y
+// up from the foot's road (y = 0) to the top's (`height`), z across the roadway and both
+// sidewalks. The floor is the foot's road; the houses and hopper stand above the region.
+SceneLayout streetLayout(const ParamValues& v)
+{
+    SceneLayout l;
+    auto street = std::make_shared<const street::Layout>(street::Layout::fromParams(v));
+    const double across = 0.5 * street->width + street->sidewalk;
+    l.region = Eigen::AlignedBox3d(Eigen::Vector3d(street->xTop, 0.0, -across),
+                                   Eigen::Vector3d(street->xFoot, street->height + 2.0, across));
+    l.walls = false;
+    l.gravity = v.real("g");
+    l.ballRadius = v.real("r");
+    l.balls = static_cast<int>(v.integer("n"));
+    l.street = std::move(street);
+    return l;
+}
+
 } // namespace
 
 SceneLayout layoutFor(const RunSpec& spec)
@@ -70,6 +88,8 @@ SceneLayout layoutFor(const RunSpec& spec)
         return cornerBoxLayout(v, v.real("r"), 2);
     case SceneId::ManyBalls:
         return centredBoxLayout(v);
+    case SceneId::Street:
+        return streetLayout(v);
     }
     throw std::logic_error("scene without a layout");
 }

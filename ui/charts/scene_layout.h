@@ -6,8 +6,11 @@
 #pragma once
 
 #include "core/simulation.h"
+#include "core/street/street_layout.h"
 
 #include <Eigen/Geometry>
+
+#include <memory>
 
 namespace ab::ui {
 
@@ -24,6 +27,9 @@ struct SceneLayout {
     // where the balls have a contact radius.
     double drawnInset = 0.0;
     int balls = 1;
+    // The street of stage 5 (road blocks, crossings, sidewalks, houses, cars), built once
+    // from the parameters; null in the other stages. Its region is the road's extent.
+    std::shared_ptr<const street::Layout> street;
 };
 
 SceneLayout layoutFor(const RunSpec& spec);

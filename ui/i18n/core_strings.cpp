@@ -360,6 +360,78 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "steps: %1 is outside [1, %2]"),
     QT_TRANSLATE_NOOP("core", "compare with %1: %2"),
     QT_TRANSLATE_NOOP("core", "compare with %1: the two runs do not start at the same time with the same balls"),
+    // Stage 5, the street.
+    QT_TRANSLATE_NOOP("core", "\"Originally gravity, slope and rotation were to give the balls their initial speed and "
+                              "direction.\" Here the balls start almost at rest (speed) above the top block."),
+    QT_TRANSLATE_NOOP(
+        "core", "\"The basic idea was that the balls would bounce down a street like the picture from Sony's advert; "
+                "the simulation was done in a simplified environment, a box, to establish that the basic functions "
+                "work.\" The report's rules have no slope, kerb or crossing: this stage is the physical model's."),
+    QT_TRANSLATE_NOOP("core", "3.1, Figure 1"),
+    QT_TRANSLATE_NOOP("core", "Balls down a steep street"),
+    QT_TRANSLATE_NOOP("core", "St1"),
+    QT_TRANSLATE_NOOP("core", "St1-St2"),
+    QT_TRANSLATE_NOOP("core", "St4"),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's basic idea: balls bouncing down a steep street, as in Sony's advert, set going by "
+                "gravity, slope and rotation. A hopper above the top releases them; they roll, slide and jump down the "
+                "blocks, over the flat crossings, between kerbs and house fronts, and leave at the foot. The report "
+                "built the box to test its functions and never reached the street, so only the physical model has it."),
+    QT_TRANSLATE_NOOP("core", "a ball rolling without slipping down a block"),
+    QT_TRANSLATE_NOOP("core", "a ball sliding down a block, its spin growing"),
+    QT_TRANSLATE_NOOP("core", "a ball that leaves a crossing's edge flies as a projectile"),
+    QT_TRANSLATE_NOOP("core",
+                      "an impact whose rebound would rise less than this ends in contact: the ball rolls or slides on"),
+    QT_TRANSLATE_NOOP("core", "ball radius (a superball: 3 cm)"),
+    QT_TRANSLATE_NOOP("core", "cars: %1 do not fit along these blocks; they hold at most %2"),
+    QT_TRANSLATE_NOOP("core", "cars: a roadway of %1 m is too narrow for parked cars"),
+    QT_TRANSLATE_NOOP("core", "deg"),
+    QT_TRANSLATE_NOOP("core", "eq 2.3, St5"),
+    QT_TRANSLATE_NOOP("core", "every impact, with the street or a ball"),
+    QT_TRANSLATE_NOOP("core", "friction holds a ball set down on a block: it rolls (St1)"),
+    QT_TRANSLATE_NOOP("core", "height of the kerbs: the sidewalks stand this far above the road"),
+    QT_TRANSLATE_NOOP("core", "it lands when its centre is r from the road's plane: the earliest root"),
+    QT_TRANSLATE_NOOP("core", "length of a block along the road"),
+    QT_TRANSLATE_NOOP("core",
+                      "length of each flat crossing (the top one too); the flood leaves its lower edge as projectiles"),
+    QT_TRANSLATE_NOOP("core", "number of balls released from the hopper above the top"),
+    QT_TRANSLATE_NOOP("core", "parked cars (boxes) along the kerbs, spread over the blocks"),
+    QT_TRANSLATE_NOOP("core", "restitution of every impact, with the street and between balls (a superball: 0.8-0.9)"),
+    QT_TRANSLATE_NOOP("core", "road blocks, with a flat crossing between two"),
+    QT_TRANSLATE_NOOP("core", "roadway between the kerbs"),
+    QT_TRANSLATE_NOOP("core", "seed of the start positions and velocities"),
+    QT_TRANSLATE_NOOP("core", "slope of every block (17 deg: a 31 % grade, San Francisco's steepest)"),
+    QT_TRANSLATE_NOOP("core",
+                      "start velocities: each component uniform in [-speed, speed] (gravity and slope do the rest)"),
+    QT_TRANSLATE_NOOP("core", "width of each sidewalk, between kerb and house fronts"),
+    QT_TRANSLATE_NOOP("core", "width: %1 m leaves no room for balls of radius %2 m (width must be at least 8 r)"),
+    // The street's built-in presets.
+    QT_TRANSLATE_NOOP(
+        "core", "10,000 superballs with restitution 0.95 and tangential restitution 0.9 (Garwin's superball: the "
+                "contact point's slip reverses at each impact, so spin turns into speed and back). They keep bouncing "
+                "high all the way down, jump far off each crossing, and hit the house fronts; the energy chart shows "
+                "translation and rotation trading while the total falls only slowly as the balls drop."),
+    QT_TRANSLATE_NOOP("core", "One ball rolling down one block: the 5/7 rule on a slope"),
+    QT_TRANSLATE_NOOP("core",
+                      "One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = "
+                      "0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates "
+                      "at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a "
+                      "ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a "
+                      "straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street."),
+    QT_TRANSLATE_NOOP(
+        "core", "Sony's advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper "
+                "over the top of three 17 deg blocks with parked cars along the kerbs, restitution 0.85 and grippy "
+                "rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block "
+                "within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away."),
+    QT_TRANSLATE_NOOP("core", "Superballs: e and beta near 1"),
+    QT_TRANSLATE_NOOP("core", "Ten thousand superballs down a steep street"),
+    QT_TRANSLATE_NOOP("core", "The advert: a quarter of a million superballs"),
+    QT_TRANSLATE_NOOP(
+        "core", "The report's basic idea (chapter 3.1): balls bouncing down a steep street like Sony's advert, set "
+                "going by gravity and slope. 10,000 balls of 3 cm drop from a hopper over the top of a 17 deg street "
+                "(a 31 % grade) of three 80 m blocks with flat crossings between them. They land, roll and bounce down "
+                "block 1 (a rolling ball gains 5/7 g sin 17 deg = 2.05 m/s^2), jump where each crossing ends, and "
+                "leave at the foot; the balls-per-second chart counts them past each block's foot."),
 };
 
 } // namespace

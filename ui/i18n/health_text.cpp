@@ -189,6 +189,8 @@ QString HealthText::halted(const SceneInfo& scene, const ParamValues& params, do
             .arg(at, limit("max_events"));
     case SceneId::ManyBalls:
         return tr("The report's bounce limit stopped the motion at t = %1 (Appendix D)").arg(at);
+    case SceneId::Street: // the physical model's stage: no report's counter stops it
+        return {};
     }
     return {};
 }

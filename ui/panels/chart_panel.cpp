@@ -97,7 +97,10 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     applies_.fill(true);
     wanted_.fill(true);
     available_.fill(true);
-    splitter->setSizes({300, 300, 260, 220, 220, 220, 220});
+    QList<int> sizes = {300, 300, 260};
+    while (sizes.size() < qsizetype(allChartKinds().size()))
+        sizes << 220; // every chart a size: one left out would start collapsed to nothing
+    splitter->setSizes(sizes);
     // Up to five charts: when the window is too short for all of them at a readable
     // height they scroll, rather than shrink until their labels are cut.
     auto* scroll = new QScrollArea;
@@ -276,6 +279,9 @@ void ChartPanel::paginate()
             pages_->addTab(label);
     }
     pages_->setVisible(count > 1);
+    // Tabs wider than the panel (the street's six charts, one a page in lecture mode) scroll
+    // with arrows rather than run past its edge.
+    pages_->setUsesScrollButtons(pages_->sizeHint().width() > width());
     pages_->setCurrentIndex(std::clamp(current, 0, std::max(count - 1, 0)));
     updating_ = false;
     showPage(pages_->currentIndex());
@@ -307,6 +313,10 @@ QString ChartPanel::chartName(ChartKind kind)
         return tr("Difference");
     case ChartKind::Spin:
         return tr("Spin");
+    case ChartKind::FootRate:
+        return tr("Foot rate");
+    case ChartKind::Speeds:
+        return tr("Speeds");
     }
     return {};
 }

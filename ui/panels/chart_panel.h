@@ -48,7 +48,7 @@ public:
     // panel over several frames: the track, the comparison's (when not null) and the
     // cursor of slot `slot` in [0, kSlots). False for a slot whose chart is hidden, which
     // is left alone.
-    static constexpr std::size_t kSlots = 7;
+    static constexpr std::size_t kSlots = 9; // one per ChartKind
     bool refreshSlot(std::size_t slot, const MotionTrack& track, const MotionTrack* comparison,
                      std::optional<double> cursor);
 

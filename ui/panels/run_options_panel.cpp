@@ -10,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QStandardItemModel>
 
 #include <algorithm>
 #include <tuple>
@@ -77,6 +78,12 @@ RunOptionsPanel::RunOptionsPanel(QWidget* parent) : QWidget(parent)
         model_->setItemData(model_->count() - 1, coreText(modelSummary(m)), Qt::ToolTipRole);
     }
     form->addRow(tr("Model"), model_);
+
+    noReport_ = new QLabel;
+    noReport_->setObjectName("noReportModel");
+    noReport_->setWordWrap(true);
+    noReport_->hide();
+    form->addRow(noReport_);
 
     integrator_ = new QComboBox;
     integrator_->setObjectName("integratorCombo");
@@ -168,6 +175,8 @@ QString RunOptionsPanel::reportScheme(SceneId scene)
         return tr("report: semi-implicit Euler step (eqs 2.18-2.22)");
     case SceneId::ManyBalls:
         return tr("report: one update per frame (Appendix D)");
+    case SceneId::Street: // the report model is not offered (reportModelOffered)
+        return {};
     }
     return {};
 }
@@ -182,8 +191,47 @@ QString RunOptionsPanel::reportImpacts(SceneId scene)
         return tr("report: at the step's end, one face a step (Appendix B)");
     case SceneId::ManyBalls:
         return tr("report: at the end of each frame (Appendix D)");
+    case SceneId::Street:
+        return {};
     }
     return {};
+}
+
+bool RunOptionsPanel::reportModelOffered(SceneId scene)
+{
+    switch (scene) {
+    case SceneId::Bounce1d:
+    case SceneId::Box3d:
+    case SceneId::TwoBalls:
+    case SceneId::ManyBalls:
+        return true;
+    case SceneId::Street: // the report built the box and stopped there (report 3.1)
+        return false;
+    }
+    return false;
+}
+
+QString RunOptionsPanel::noReportModelReason()
+{
+    return tr("The report's rules stop at the box; the street is the physical model's (report 3.1)");
+}
+
+void RunOptionsPanel::offerReportModel(bool offered)
+{
+    // The report's entries stay in the lists, greyed, with the reason as their tooltip and
+    // in a line under the model: the reader sees what is missing and why.
+    const QString why = offered ? QString() : noReportModelReason();
+    for (QComboBox* box : {model_, compare_}) {
+        auto* items = qobject_cast<QStandardItemModel*>(box->model());
+        const int at = box->findData(box == model_ ? int(ModelKind::Report)
+                                                   : compareCode(ModelKind::Report, Integrator::SymplecticEuler));
+        if (!items || at < 0)
+            continue;
+        items->item(at)->setEnabled(offered);
+        box->setItemData(at, offered ? coreText(modelSummary(ModelKind::Report)) : why, Qt::ToolTipRole);
+    }
+    noReport_->setText(why);
+    noReport_->setVisible(!offered);
 }
 
 void RunOptionsPanel::showScheme()
@@ -216,6 +264,7 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     updating_ = true;
     scene_ = &scene;
     shown_ = options;
+    offerReportModel(reportModelOffered(scene.id));
     showScheme(); // the report's entries go where the physical choices now show
     selectData(model_, int(options.model));
     selectData(integrator_, int(options.integrator));

@@ -44,6 +44,10 @@ public:
     // What the greyed integrator and impact boxes say for the report model of `scene`.
     static QString reportScheme(SceneId scene);
     static QString reportImpacts(SceneId scene);
+    // Whether the report model exists for `scene`: not for the street, which the report's
+    // rules never reached; the window then greys it out and says why (noReportModelReason).
+    static bool reportModelOffered(SceneId scene);
+    static QString noReportModelReason();
 
     QComboBox* modelBox() const { return model_; }
     QComboBox* integratorBox() const { return integrator_; }
@@ -63,6 +67,7 @@ private:
     void showRefusals();
     // The report model's own scheme in the greyed boxes, the physical model's choices else.
     void showScheme();
+    void offerReportModel(bool offered);
 
     const SceneInfo* scene_ = nullptr;
     RunOptions shown_;
@@ -75,6 +80,7 @@ private:
     QLineEdit* steps_;
     QLabel* dtUnit_;
     QLabel* error_;
+    QLabel* noReport_; // why the report model is greyed out, where it is
     bool updating_ = false;
     // Refused typed entries: the field and why; an empty message stands for the window's
     // refusal of a whole proposal (windowRefusal_).

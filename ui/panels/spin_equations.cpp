@@ -13,6 +13,12 @@ namespace ab::ui {
 
 namespace {
 
+// The scenes whose balls meet each other (impacts between two balls, restitution e).
+bool manyBalls(SceneId scene)
+{
+    return scene == SceneId::TwoBalls || scene == SceneId::ManyBalls || scene == SceneId::Street;
+}
+
 QString num(double x)
 {
     return QString::number(x, 'g', 4);
@@ -91,7 +97,7 @@ QString SpinEquations::inertiaRow(const RunSpec& spec)
     const Units u = unitsOf(spec);
     const double q = v.real("inertia"), r = v.real("r");
     const QString formula = QStringLiteral("I = q m r\u00b2");
-    if (spec.scene == SceneId::ManyBalls) // equal balls, per unit mass
+    if (spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street) // equal balls, per unit mass
         return row(
             QStringLiteral("I"), QStringLiteral("I/m = q r\u00b2"),
             tr("per unit mass: %1 \u00d7 (%2 %3)\u00b2 = %4 %3\u00b2").arg(num(q), num(r), u.length, num(q * r * r)));
@@ -160,14 +166,14 @@ QString SpinEquations::impactRows(const RunSpec& spec)
                tr("an impact that slides: at most \u03bc = %1 times the normal impulse (Walton: the smaller of "
                   "S9 and S10)")
                    .arg(num(mu)));
-    if (spec.scene == SceneId::TwoBalls || spec.scene == SceneId::ManyBalls)
+    if (manyBalls(spec.scene))
         out += row(QStringLiteral("S11-S12"),
                    QStringLiteral("\u0394v_i = P_t/m_i,  \u0394v_j = \u2212P_t/m_j,  \u0394\u03c9 = \u2212r n \u00d7 "
                                   "(\u00b1P_t)/I"),
                    tr("between two balls: their momentum is kept and both spins change in the same sense"));
     out += row(QStringLiteral("S13"), QStringLiteral("m r n \u00d7 v' + I \u03c9' = m r n \u00d7 v + I \u03c9"),
                tr("at a wall or the floor the angular momentum about the contact point is kept"));
-    const char* restitution = spec.scene == SceneId::TwoBalls || spec.scene == SceneId::ManyBalls ? "e" : "k";
+    const char* restitution = manyBalls(spec.scene) ? "e" : "k";
     if (v.indexOf(restitution) && v.real(restitution) == 1.0 && beta == 1.0)
         out += row(QStringLiteral("S9"), QStringLiteral("|u'| = |u|"),
                    tr("%1 = 1 and \u03b2 = 1: an impact that sticks loses no energy (a superball)")

@@ -4,6 +4,8 @@
 #include "ui/i18n/core_text.h"
 #include "ui/i18n/health_text.h"
 
+#include "core/street/street_census.h"
+
 #include <QApplication>
 #include <QEvent>
 #include <QFrame>
@@ -106,6 +108,32 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
 void StatusReadout::setRun(const RunSpec& spec)
 {
     spec_ = spec;
+    street_.reset();
+    if (spec.scene == SceneId::Street)
+        street_ = std::make_shared<const street::Layout>(street::Layout::fromParams(spec.params));
+}
+
+QString StatusReadout::streetCensus(const Frame& shown) const
+{
+    // Counted from the frame on screen: a ball beyond the open foot has left the run.
+    int left = 0, firstFoot = 0;
+    double fastest = 0.0;
+    for (int i = 0; i < shown.balls(); ++i) {
+        const auto k = std::size_t(3 * i);
+        const auto x = double(shown.p[k]);
+        firstFoot += x > street_->blockFootX.front() ? 1 : 0;
+        if (street::hasLeft(*street_, x)) {
+            ++left;
+            continue;
+        }
+        if (k + 2 < shown.v.size())
+            fastest = std::max(fastest, std::hypot(double(shown.v[k]), double(shown.v[k + 1]), double(shown.v[k + 2])));
+    }
+    return tr("%1 balls on the street, %2 past the first block's foot, %3 left at the foot; fastest %4 m/s")
+        .arg(shown.balls() - left)
+        .arg(firstFoot)
+        .arg(left)
+        .arg(fastest, 0, 'f', 1);
 }
 
 void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool lookingBack)
@@ -186,6 +214,10 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
         return {text, text, Tone::Plain, tr("The run is complete")};
+    }
+    if (street_ && shown) {
+        const QString text = streetCensus(*shown);
+        return {text, text, Tone::Plain, tr("Balls on the street")};
     }
     return {};
 }

@@ -16,6 +16,7 @@
 #include <QObject>
 #include <QString>
 
+#include <memory>
 #include <optional>
 
 class QLabel;
@@ -52,6 +53,8 @@ private:
     };
     Message messageFor(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
     std::optional<QString> reportRulesAt(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
+    // The street's census of the frame shown: on the street, past the first foot, left.
+    QString streetCensus(const Frame& shown) const;
     void showDetails();
     void fitWarning(); // the headline where it fits whole, else the brief
 
@@ -64,6 +67,7 @@ private:
     QFrame* popup_ = nullptr;
     Message message_; // the message of the moment shown (Details opens its whole text)
     std::optional<RunSpec> spec_;
+    std::shared_ptr<const street::Layout> street_; // in stage 5
 };
 
 // "0.8 us", "12 ms", "1.3 s".

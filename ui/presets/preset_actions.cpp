@@ -89,6 +89,10 @@ QString chartName(ChartKind kind)
         return PresetActions::tr("Difference between the runs (with a comparison or a closed form)");
     case ChartKind::Spin:
         return PresetActions::tr("Spin (balls that turn, physical model)");
+    case ChartKind::FootRate:
+        return PresetActions::tr("Balls passing the foot of each block (street)");
+    case ChartKind::Speeds:
+        return PresetActions::tr("Speeds of the balls on the street (street)");
     }
     return QString::fromLatin1(chartKey(kind).data()); // a chart added later, by its key
 }
@@ -125,8 +129,10 @@ Preset capturePreset(MainWindow& window, const std::string& name, const std::str
     for (std::size_t i = 0; i < spec.params.table().size(); ++i)
         if (!spec.params.isDefault(i)) // a preset lists only what differs from the report
             p.params.emplace_back(spec.params.table()[i].key, spec.params.raw(i));
+    // Only the charts the preset format names (presetChartKeys): a preset must read back.
+    const std::vector<std::string>& known = presetChartKeys();
     for (ChartKind kind : allChartKinds())
-        if (window.charts()->chartShown(kind))
+        if (window.charts()->chartShown(kind) && std::find(known.begin(), known.end(), chartKey(kind)) != known.end())
             p.view.charts.emplace_back(chartKey(kind));
     p.view.selectedBall = run.selectedBall();
     p.view.compare = run.comparison();

@@ -12,6 +12,7 @@ double defaultSpeed(SceneId scene)
     case SceneId::TwoBalls:
         return 5.0;
     case SceneId::ManyBalls:
+    case SceneId::Street:
         return 1.0;
     }
     return 1.0;

@@ -20,7 +20,10 @@ inline constexpr double kLessonWait = 3.0;
 //  stage 2: the first wall (z = 300 at vz = 15 m/s from z = 2) after 19.9 s: 10x, 2.0 s;
 //  stage 3: the balls 296 m apart close at 30 m/s and touch after (296 - 2 r) / 30 = 9.8 s:
 //           5x, 2.0 s;
-//  stage 4: the balls start packed in a cube 18 wide and collide in the first frames: 1x.
+//  stage 4: the balls start packed in a cube 18 wide and collide in the first frames: 1x;
+//  stage 5: the hopper's lowest layer lands on the top crossing from 0.5 m in
+//           sqrt(2 * 0.5 / 9.82) = 0.32 s, and the first balls roll onto the first block
+//           within a second or two: 1x (real time, as the advert was filmed).
 double defaultSpeed(SceneId scene);
 
 } // namespace ab::ui

@@ -50,12 +50,14 @@ void Recording::add(long long step, const State& s)
 {
     const Eigen::Index b = trackedBall_;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
-    track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene);
+    const StreetSample street = layout_.street ? measureStreet(*layout_.street, s) : StreetSample{}; // two more
+    track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene, street);
     orientations_.follow(s); // every step: the balls turn between the kept frames too
     if (step % frameStride_ != 0)
         return;
     frames_.push_back(makeFrame(step, s, scene));
     frames_.back().q = orientations_.floats();
+    frames_.back().street = street;
     if (frames_.size() == 1)
         maxFrames_ = std::max<std::size_t>(frameBudget_ / std::max<std::size_t>(frames_.front().bytes(), 1), 2);
     while (frames_.size() > maxFrames_)
@@ -94,7 +96,7 @@ void Recording::setTrackedBall(int ball)
         const auto i = static_cast<std::size_t>(3 * ball);
         const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);
         const Eigen::Vector3d v(f.v[i], f.v[i + 1], f.v[i + 2]);
-        track_.add(f.step, f.t, p, v, f.spin(ball), f.scene);
+        track_.add(f.step, f.t, p, v, f.spin(ball), f.scene, f.street);
     }
 }
 

@@ -33,6 +33,7 @@ struct Frame {
     // kept frames); empty where the balls do not turn.
     std::vector<float> q;
     ConservationSample scene; // of all balls: energy, momentum, moving balls, impacts
+    StreetSample street;      // the street's counts and speeds (stage 5); zero elsewhere
 
     int balls() const { return static_cast<int>(p.size() / 3); }
     bool spins() const { return !w.empty(); }

@@ -36,7 +36,7 @@ ChartStrip::ChartStrip(const Simulation& sim, int ball, const std::vector<ChartK
     std::vector<int> need;
     for (ChartKind kind : kinds) {
         MotionChart probe(kind);
-        probe.configure(sim.scene(), ball, chartUnitsOf(meter));
+        probe.configure(sim.scene(), ball, chartUnitsOf(meter, sim.spec()));
         need.push_back(std::max(kMinHeight, readableHeight(probe, size.width())));
     }
     std::size_t n = 1;
@@ -59,7 +59,7 @@ ChartStrip::Panel ChartStrip::drawPanel(const Simulation& sim, int ball, ChartKi
     const double scale = std::min(1.0, double(rect.height()) / need); // pixels per chart unit
     const QSizeF logical(rect.width() / scale, rect.height() / scale);
     MotionChart chart(kind);
-    chart.configure(sim.scene(), ball, chartUnitsOf(meter));
+    chart.configure(sim.scene(), ball, chartUnitsOf(meter, sim.spec()));
     chart.setTimeSpan(tEnd);
     // Laid out at its size before the lines go in (the time ticks follow the plot's width).
     QGraphicsScene scene;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "clip_source.h"
 
+#include "ui/charts/scene_layout.h"
+
 #include "core/diagnostics/conservation.h"
 #include "core/params.h"
 
@@ -91,6 +93,7 @@ MotionTrack recordTrack(const RunSpec& spec, long long steps, int ball, double t
 {
     const auto sim = makeSimulation(spec);
     const ConservationMeter meter(*sim);
+    const SceneLayout layout = layoutFor(spec); // the street's, for its own charts
     MotionTrack track;
     long long index = 0;
     bool healthy = true, past = false;
@@ -100,7 +103,8 @@ MotionTrack recordTrack(const RunSpec& spec, long long steps, int ball, double t
             healthy = healthy && finite(s);
             past = past || !reached(s.t, tEnd);
             if (healthy && !past)
-                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), meter.measure(s));
+                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s),
+                          layout.street ? measureStreet(*layout.street, s) : StreetSample{});
         },
         [&] { return !healthy || past || (cancelled && cancelled()); });
     return track;

@@ -76,7 +76,7 @@ void OffscreenView::setScene(const SceneLayout& layout, const QString& lengthUni
     renderer_->setGeometry(geometry_);
     renderer_->setColours(colours_);
     if (pose)
-        camera_.setPose(pose->target, pose->yaw, pose->pitch, pose->distance, (geometry_.hi - geometry_.lo).length());
+        camera_.setPose(*pose, (geometry_.hi - geometry_.lo).length());
     else
         frameSceneCamera(camera_, geometry_, layout_, float(size_.width()) / float(size_.height()));
 }

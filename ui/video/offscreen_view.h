@@ -24,11 +24,6 @@ class QOpenGLFramebufferObject;
 
 namespace ab::ui {
 
-struct CameraPose {
-    QVector3D target;
-    float yaw = 0.0f, pitch = 0.0f, distance = 1.0f;
-};
-
 class OffscreenView {
 public:
     explicit OffscreenView(QSize size);

@@ -90,6 +90,8 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
     geometryDirty_ = coloursDirty_ = ballsDirty_ = traceDirty_ = ghostsDirty_ = true;
     if (reframe || regionChanged)
         resetView();
+    else if (!layout_.street)
+        setStreetShot(std::nullopt);
     update();
 }
 
@@ -111,7 +113,44 @@ void BallView::resetView()
     // Framed at the next paint, when the window's size (the aspect) is known.
     framePending_ = true;
     cameraMoved_ = false;
+    if (layout_.street || shot_)
+        shot_ = layout_.street ? std::optional(StreetShot::Foot) : std::nullopt; // frameSceneCamera's street shot
+    emit streetShotChanged();
     update();
+}
+
+void BallView::setStreetShot(std::optional<StreetShot> shot)
+{
+    shot = layout_.street ? shot : std::nullopt;
+    if (shot == shot_)
+        return;
+    shot_ = shot;
+    placeStreetShot();
+    emit streetShotChanged();
+}
+
+void BallView::placeStreetShot()
+{
+    if (!shot_ || !layout_.street)
+        return;
+    const float aspect = float(width()) / float(std::max(height(), 1));
+    auto front = *shot_ == StreetShot::Flood ? floodFront(*layout_.street, balls_) : std::nullopt;
+    if (!front && !balls_.empty()) // every ball has left: the flood has passed the foot
+        front = float(layout_.street->xFoot);
+    const CameraPose pose = streetPose(*layout_.street, *shot_, aspect, front);
+    camera_.setPose(pose, (geometry_.hi - geometry_.lo).length());
+    framePending_ = false;
+    cameraMoved_ = true;
+    update();
+}
+
+void BallView::userMovedCamera()
+{
+    cameraMoved_ = true;
+    if (shot_) {
+        shot_.reset();
+        emit streetShotChanged();
+    }
 }
 
 void BallView::frameScene()
@@ -120,18 +159,18 @@ void BallView::frameScene()
     framePending_ = false;
 }
 
-void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance)
+void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float fovYDeg)
 {
-    camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length());
+    camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length(), fovYDeg);
     framePending_ = false;
-    cameraMoved_ = true;
+    userMovedCamera();
     update();
 }
 
 void BallView::turn(float yawDegrees)
 {
     camera_.turn(yawDegrees);
-    cameraMoved_ = true;
+    userMovedCamera();
     update();
 }
 
@@ -147,6 +186,8 @@ void BallView::setBalls(const std::vector<float>& xyz, const std::vector<float>&
     balls_ = xyz;
     orientations_ = orientations;
     ballsDirty_ = true;
+    if (shot_ == StreetShot::Flood)
+        placeStreetShot();
     update();
 }
 
@@ -225,7 +266,9 @@ void BallView::uploadPending()
 
 RenderInputs BallView::renderInputs() const
 {
-    return sceneRenderInputs(camera_, layout_, size(), selected_, background_, scale_);
+    RenderInputs in = sceneRenderInputs(camera_, layout_, size(), selected_, background_, scale_);
+    in.cutaway = shot_ == StreetShot::Side; // the near houses would hide the street's profile
+    return in;
 }
 
 void BallView::paintGL()
@@ -291,9 +334,14 @@ float BallView::drawnRadius(const QVector3D& centre) const
     return std::max(in.radius, in.minPixels * depth / in.pixelsPerUnit);
 }
 
+bool BallView::hidden(int i) const
+{
+    return layout_.street && ballHidden(*layout_.street, balls_[static_cast<std::size_t>(3 * i)]);
+}
+
 bool BallView::ballPixel(int ball, QPointF& pixel) const
 {
-    if (ball < 0 || std::size_t(3 * ball + 2) >= balls_.size())
+    if (ball < 0 || std::size_t(3 * ball + 2) >= balls_.size() || hidden(ball))
         return false;
     return camera_.project(ballAt(ball), size(), pixel);
 }
@@ -307,6 +355,8 @@ int BallView::pick(const QPointF& pixel) const
     const int n = int(balls_.size() / 3);
     for (int i = 0; i < n; ++i) {
         // Ray-sphere: the nearest t >= 0 with |origin + t dir - c| = r.
+        if (hidden(i))
+            continue;
         const QVector3D c = ballAt(i);
         const float r = drawnRadius(c);
         const QVector3D oc = c - origin;
@@ -369,7 +419,7 @@ void BallView::keyPressEvent(QKeyEvent* e)
         QOpenGLWindow::keyPressEvent(e);
         return;
     }
-    cameraMoved_ = true;
+    userMovedCamera();
     update();
 }
 
@@ -412,7 +462,7 @@ void BallView::mouseMoveEvent(QMouseEvent* e)
         camera_.pan(float(d.x()), float(d.y()), size());
     else
         return;
-    cameraMoved_ = true;
+    userMovedCamera();
     update();
 }
 
@@ -436,7 +486,7 @@ void BallView::mouseDoubleClickEvent(QMouseEvent* e)
 void BallView::wheelEvent(QWheelEvent* e)
 {
     camera_.zoom(float(e->angleDelta().y()) / 120.0f);
-    cameraMoved_ = true;
+    userMovedCamera();
     update();
 }
 

@@ -14,6 +14,7 @@
 #include "orbit_camera.h"
 #include "scene_geometry.h"
 #include "scene_renderer.h"
+#include "street_camera.h"
 #include "view_frame.h" // ballColours
 
 #include <QElapsedTimer>
@@ -21,6 +22,7 @@
 #include <QPainter>
 #include <QWidget>
 
+#include <optional>
 #include <vector>
 
 namespace ab::ui {
@@ -67,7 +69,14 @@ public:
     // Turns the camera about the vertical through the target (the window's turntable).
     void turn(float yawDegrees);
     // Places the camera (a preset's view); it then stays until the user moves it.
-    void setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance);
+    void setCameraPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance,
+                       float fovYDeg = OrbitCamera::kDefaultFovY);
+
+    // The street's camera shots (stage 5): placed at once, the flood shot then follows the
+    // front of the flood with every frame; moving the camera by hand leaves the shot
+    // (streetShotChanged). Outside the street it does nothing.
+    void setStreetShot(std::optional<StreetShot> shot);
+    std::optional<StreetShot> streetShot() const { return shot_; }
 
     const OrbitCamera& camera() const { return camera_; }
     int selected() const { return selected_; }
@@ -83,6 +92,8 @@ signals:
     void framePainted(double paintMs, double intervalMs);
     // Escape: the window should take the keys back.
     void keysReleased();
+    // The street's shot changed: set, framed anew, or left by moving the camera by hand.
+    void streetShotChanged();
 
 protected:
     void initializeGL() override;
@@ -108,6 +119,11 @@ private:
     int pick(const QPointF& pixel) const;
     float drawnRadius(const QVector3D& centre) const;
     QVector3D ballAt(int i) const;
+    // Whether ball i is not drawn (it left the street at its open foot).
+    bool hidden(int i) const;
+    // The camera moved by hand: it keeps its place, and leaves the street's shot.
+    void userMovedCamera();
+    void placeStreetShot();
 
     OrbitCamera camera_;
     SceneRenderer renderer_;
@@ -131,6 +147,7 @@ private:
     bool framePending_ = true;
     bool cameraMoved_ = false;
     double scale_ = 1.0;
+    std::optional<StreetShot> shot_;
 };
 
 } // namespace ab::ui

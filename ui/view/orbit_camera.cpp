@@ -11,6 +11,7 @@ namespace ab::ui {
 void OrbitCamera::frame(const QVector3D& lo, const QVector3D& hi, float yawDeg, float pitchDeg, float aspect)
 {
     target_ = (lo + hi) / 2.0f;
+    fovY_ = kDefaultFovY;
     size_ = std::max((hi - lo).length(), 1e-6f);
     yaw_ = yawDeg;
     pitch_ = pitchDeg;
@@ -51,8 +52,10 @@ void OrbitCamera::zoom(float wheelSteps)
     distance_ = std::clamp(distance_ * std::pow(0.85f, wheelSteps), size_ * 1e-3f, size_ * 50.0f);
 }
 
-void OrbitCamera::setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize)
+void OrbitCamera::setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize,
+                          float fovYDeg)
 {
+    fovY_ = std::clamp(fovYDeg, 5.0f, 90.0f);
     size_ = std::max(sceneSize, 1e-6f);
     target_ = target;
     yaw_ = std::fmod(yawDeg, 360.0f);

@@ -14,8 +14,18 @@
 
 namespace ab::ui {
 
+// Where a camera stands: the point it looks at, its turn about the vertical and above the
+// floor (degrees), and its distance from the target (OrbitCamera::setPose takes these).
+struct CameraPose {
+    QVector3D target;
+    float yaw = 0.0f, pitch = 0.0f, distance = 1.0f;
+    float fovY = 40.0f; // the vertical field of view, degrees (a long lens: less)
+};
+
 class OrbitCamera {
 public:
+    static constexpr float kDefaultFovY = 40.0f;
+
     // Looks at the centre of the box [lo, hi] from `yawDeg`, `pitchDeg`, far enough to see
     // all of it in a view of aspect `aspect` (width / height).
     void frame(const QVector3D& lo, const QVector3D& hi, float yawDeg, float pitchDeg, float aspect);
@@ -28,7 +38,13 @@ public:
     void moveEye(const QVector3D& delta);
     // Puts the camera at a saved pose (a preset's); pitch is kept within +-89 degrees as
     // orbit() keeps it, distance within the zoom's limits for a scene of size `sceneSize`.
-    void setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize);
+    // `fovYDeg` is the vertical field of view (framing always uses the default 40 degrees).
+    void setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize,
+                 float fovYDeg = kDefaultFovY);
+    void setPose(const CameraPose& pose, float sceneSize)
+    {
+        setPose(pose.target, pose.yaw, pose.pitch, pose.distance, sceneSize, pose.fovY);
+    }
 
     QVector3D eye() const;
     QVector3D target() const { return target_; }
@@ -55,7 +71,7 @@ private:
     float yaw_ = 60.0f;   // degrees, about +y, 0 looks along -z
     float pitch_ = 20.0f; // degrees above the horizontal
     float distance_ = 10.0f;
-    float fovY_ = 40.0f;
+    float fovY_ = kDefaultFovY;
     float size_ = 1.0f; // the framed box's diagonal, for near/far and step sizes
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scene_geometry.h"
 
+#include "street_geometry.h"
+
 #include "ui/charts/nice_ticks.h"
 
 #include <QCoreApplication>
@@ -117,7 +119,9 @@ SceneGeometry buildSceneGeometry(const SceneLayout& l, const QString& lengthUnit
     g.hi = QVector3D(float(hi.x()), float(hi.y()), float(hi.z()));
     g.arrowStep = float(0.02 * (hi - lo).maxCoeff());
     const float y = float(l.floorY - l.drawnInset);
-    if (l.walls) {
+    if (l.street) {
+        addStreetGeometry(g, *l.street, lengthUnit);
+    } else if (l.walls) {
         const float in = float(l.drawnInset);
         addFloor(g, g.lo.x() - in, g.hi.x() + in, g.lo.z() - in, g.hi.z() + in, y);
         addBox(g, l, lengthUnit);

@@ -27,6 +27,9 @@ struct SceneLabel {
 
 struct SceneGeometry {
     std::vector<FlatVertex> floor; // opaque triangles
+    // Opaque triangles that a cut-away view leaves out: the street's houses on the near
+    // (+z) side, which hide the road from the side shot. Empty in the other stages.
+    std::vector<FlatVertex> cutaway;
     std::vector<FlatVertex> lines; // grid, edges, scale
     std::vector<FlatVertex> walls; // translucent triangles, drawn last
     std::vector<SceneLabel> labels;

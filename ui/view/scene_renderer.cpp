@@ -129,11 +129,13 @@ void SceneRenderer::release()
 void SceneRenderer::setGeometry(const SceneGeometry& g)
 {
     std::vector<FlatVertex> all;
-    all.reserve(g.floor.size() + g.lines.size() + g.walls.size());
+    all.reserve(g.floor.size() + g.cutaway.size() + g.lines.size() + g.walls.size());
     all.insert(all.end(), g.floor.begin(), g.floor.end());
+    all.insert(all.end(), g.cutaway.begin(), g.cutaway.end());
     all.insert(all.end(), g.lines.begin(), g.lines.end());
     all.insert(all.end(), g.walls.begin(), g.walls.end());
     floorVertices_ = static_cast<int>(g.floor.size());
+    cutawayVertices_ = static_cast<int>(g.cutaway.size());
     lineVertices_ = static_cast<int>(g.lines.size());
     wallVertices_ = static_cast<int>(g.walls.size());
     flat_.bind();
@@ -195,6 +197,7 @@ void SceneRenderer::setCommonUniforms(QOpenGLShaderProgram& p, const RenderInput
     p.setUniformValue("radius", in.radius);
     p.setUniformValue("minPixels", in.minPixels);
     p.setUniformValue("pixelsPerUnit", in.pixelsPerUnit);
+    p.setUniformValue("hideBeyondX", in.hideBeyondX);
 }
 
 void SceneRenderer::draw(const RenderInputs& in)
@@ -221,7 +224,8 @@ void SceneRenderer::draw(const RenderInputs& in)
         else
             glDisableVertexAttribArray(3);
         glDrawArraysInstanced(GL_TRIANGLES, 0, cornerCount, balls_); // every ball in one call
-
+    }
+    if (balls_ > 0 && in.shadows) {
         // The floor cues after the balls: where a ball hides the floor, the depth test
         // drops the cue's fragments before they are shaded (the cue writes no depth of its
         // own, so the test can run first), which matters for a pile of thousands of balls
@@ -261,7 +265,7 @@ void SceneRenderer::draw(const RenderInputs& in)
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
         flatVao_.bind();
-        glDrawArrays(GL_TRIANGLES, floorVertices_ + lineVertices_, wallVertices_);
+        glDrawArrays(GL_TRIANGLES, floorVertices_ + cutawayVertices_ + lineVertices_, wallVertices_);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
@@ -292,9 +296,9 @@ void SceneRenderer::drawFlat(const RenderInputs& in)
     // The floor sits a little behind its grid lines and the shadows, so they never flicker.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glDrawArrays(GL_TRIANGLES, 0, floorVertices_);
+    glDrawArrays(GL_TRIANGLES, 0, floorVertices_ + (in.cutaway ? 0 : cutawayVertices_));
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDrawArrays(GL_LINES, floorVertices_, lineVertices_);
+    glDrawArrays(GL_LINES, floorVertices_ + cutawayVertices_, lineVertices_);
 }
 
 } // namespace ab::ui

@@ -33,6 +33,11 @@ struct RenderInputs {
     float floorY = 0.0f;
     float fadeHeight = 1.0f;             // contact shadows fade out at this height
     QColor background{0xec, 0xf0, 0xf5}; // the clear colour (the window's theme)
+    bool shadows = true;                 // contact cues on the floor plane (not on the street's slopes)
+    bool cutaway = false;                // leave out the geometry's cut-away part (the street's near houses)
+    // Balls whose centres lie beyond this x are not drawn: the street's balls that have left
+    // the run at its open foot, parked there by the engine (core/street/street_census.h).
+    float hideBeyondX = 3.0e38f;
 };
 
 class SceneRenderer : protected QOpenGLExtraFunctions {
@@ -73,7 +78,8 @@ private:
     QOpenGLVertexArrayObject ballVao_, ghostVao_, shadowVao_, flatVao_, traceVao_;
     QOpenGLBuffer corners_, positions_, ghostPositions_, colours_, orientations_, flat_, trace_;
     int orientationCount_ = 0; // balls with an orientation uploaded
-    int balls_ = 0, ghosts_ = 0, floorVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0, traceVertices_ = 0;
+    int balls_ = 0, ghosts_ = 0, floorVertices_ = 0, cutawayVertices_ = 0, lineVertices_ = 0, wallVertices_ = 0,
+        traceVertices_ = 0;
 };
 
 } // namespace ab::ui

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "view_frame.h"
 
+#include "street_camera.h"
+
 #include "core/random.h"
 
 #include <QPainterPath>
@@ -31,8 +33,12 @@ std::vector<unsigned> ballColours(const RunSpec& spec, int balls)
 void frameSceneCamera(OrbitCamera& camera, const SceneGeometry& geometry, const SceneLayout& layout, float aspect)
 {
     // The report's WebGL camera stands at (100, 50, 50) from the centre: yaw about 63
-    // degrees, pitch about 24. The vertical scene is seen from the side.
-    if (layout.walls)
+    // degrees, pitch about 24. The vertical scene is seen from the side, the street from
+    // its foot (the advert's shot).
+    if (layout.street) {
+        const CameraPose pose = streetPose(*layout.street, StreetShot::Foot, aspect);
+        camera.setPose(pose, (geometry.hi - geometry.lo).length());
+    } else if (layout.walls)
         camera.frame(geometry.lo, geometry.hi, 63.0f, 24.0f, aspect);
     else
         camera.frame(geometry.lo, geometry.hi, 0.0f, 8.0f, aspect);
@@ -42,7 +48,12 @@ float smallestBallPixels(const SceneLayout& layout, int viewHeight, double scale
 {
     // A crowd keeps small dots (they would cover each other); up to a dozen balls are at
     // least 1/90 of the view's height in radius (12 px of 1080), all larger in lecture mode.
-    const double pixels = layout.balls > 100 ? 2.0 : layout.balls > 12 ? 5.0 : std::max(5.0, viewHeight / 90.0);
+    // The street's 3 cm balls on a 300 m street are a twentieth of a pixel from its foot:
+    // a dot 2.5 pixels in radius shows each one, and the flood's shape.
+    const double pixels = layout.street        ? 2.5
+                          : layout.balls > 100 ? 2.0
+                          : layout.balls > 12  ? 5.0
+                                               : std::max(5.0, viewHeight / 90.0);
     return float(pixels * scale);
 }
 
@@ -67,6 +78,12 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
     in.fadeHeight = layout.balls > crowd ? float(2.0 * layout.ballRadius)
                                          : float(std::max(6.0 * layout.ballRadius, 0.08 * layout.region.sizes().y()));
     in.background = background;
+    if (layout.street) {
+        // The floor cues lie on the plane y = floorY, which the sloping street is not; the
+        // balls that left at the open foot are not drawn.
+        in.shadows = false;
+        in.hideBeyondX = float(layout.street->xFoot);
+    }
     return in;
 }
 
@@ -106,7 +123,8 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
         drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
     }
     // The vertical scene reads its height off the scale: label the ball with it.
-    if (!layout.walls && balls.size() >= 3 && camera.project(QVector3D(balls[0], balls[1], balls[2]), size, at))
+    if (!layout.walls && !layout.street && balls.size() >= 3 &&
+        camera.project(QVector3D(balls[0], balls[1], balls[2]), size, at))
         drawHaloText(p, at + QPointF(0.9 * QFontMetricsF(font).height(), 0.0),
                      QStringLiteral("y = %1").arg(double(balls[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
                      Qt::AlignLeft);

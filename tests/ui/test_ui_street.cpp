@@ -1,0 +1,313 @@
+// SPDX-License-Identifier: MIT
+// The street (stage 5) on the window's side, without OpenGL: the counts and speeds its
+// charts draw from hand-made states, the foot-rate chart's balls per second, the street
+// drawn as road, crossings, houses and cars, its camera shots, the flood's front, the
+// report model greyed out with its reason, and the navigator's equations with numbers.
+#include "core/street/street_census.h"
+#include "ui/charts/chart_data_csv.h"
+#include "ui/charts/motion_chart.h"
+#include "ui/charts/scene_layout.h"
+#include "ui/charts/street_sample.h"
+#include "ui/panels/chart_panel.h"
+#include "ui/panels/run_options_panel.h"
+#include "ui/panels/street_equations.h"
+#include "ui/view/scene_geometry.h"
+#include "ui/view/street_camera.h"
+
+#include <QChartView>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineSeries>
+#include <QStandardItemModel>
+#include <QtTest>
+
+#include <cmath>
+#include <sstream>
+
+using namespace ab;
+using namespace ab::ui;
+
+namespace {
+
+RunSpec streetSpec(int balls = 10, int cars = 0)
+{
+    RunSpec spec(SceneId::Street);
+    spec.params.parse("n", std::to_string(balls));
+    spec.params.parse("cars", std::to_string(cars));
+    return spec;
+}
+
+street::Layout defaultStreet()
+{
+    return street::Layout::fromParams(RunSpec(SceneId::Street).params);
+}
+
+// Ball i at (x, the road's height + r, 0) moving at `speed` along x.
+State stateAt(const street::Layout& s, const std::vector<double>& xs, const std::vector<double>& speeds, double t)
+{
+    State st;
+    st.resize(int(xs.size()));
+    st.t = t;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        st.p.col(Eigen::Index(i)) = Eigen::Vector3d(xs[i], s.roadY(xs[i]) + s.radius, 0.0);
+        st.v.col(Eigen::Index(i)) = Eigen::Vector3d(speeds[i], 0.0, 0.0);
+    }
+    return st;
+}
+
+bool onScreen(const QPointF& p, QSize size)
+{
+    return p.x() >= 0 && p.y() >= 0 && p.x() <= size.width() && p.y() <= size.height();
+}
+
+} // namespace
+
+class UiStreet : public QObject {
+    Q_OBJECT
+
+private slots:
+    void streetSampleCountsBallsPastEachFootAndLeavesOutTheGoneBalls()
+    {
+        const street::Layout s = defaultStreet();
+        const double foot1 = s.blockFootX[0], foot2 = s.blockFootX[1];
+        // Two on block 1, one past foot 1, one past foot 2, one gone beyond the open foot.
+        const State st = stateAt(s, {10.0, 20.0, foot1 + 5.0, foot2 + 5.0, s.xFoot + 1.0}, {1, 2, 3, 4, 50}, 0.0);
+        const StreetSample sample = measureStreet(s, st);
+        QCOMPARE(footBlocks(s.blocks), (std::vector<int>{0, 1, 2}));
+        QCOMPARE(sample.pastFoot[0], 3.0); // foot2 + 5 and the gone ball are past foot 1 too
+        QCOMPARE(sample.pastFoot[1], 2.0);
+        QCOMPARE(sample.pastFoot[2], 1.0); // the gone ball is past the street's foot
+        // Speeds of the four on the street, 1 2 3 4: ranks floor(q * 3) = 0, 1, 2; fastest 4 (not 50).
+        QCOMPARE(sample.speed[0], 1.0);
+        QCOMPARE(sample.speed[1], 2.0);
+        QCOMPARE(sample.speed[2], 3.0);
+        QCOMPARE(sample.speed[3], 4.0);
+    }
+
+    void footBlocksKeepTheStreetsOwnFootOnALongStreet()
+    {
+        QCOMPARE(footBlocks(1), std::vector<int>{0});
+        QCOMPARE(footBlocks(12), (std::vector<int>{0, 1, 2, 3, 11}));
+    }
+
+    void footRateChartCountsAHandMadeFlood()
+    {
+        // Ten balls pass the first block's foot between t = 1 and t = 2 (five a half second),
+        // none before or after: the rate over a 0.5 s window is 10 balls/s in that second.
+        const street::Layout s = defaultStreet();
+        const double foot = s.blockFootX[0];
+        MotionTrack track;
+        const std::vector<double> times = {0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
+        const std::vector<int> past = {0, 0, 0, 5, 10, 10, 10};
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            std::vector<double> xs(10, foot - 3.0), vs(10, 1.0);
+            for (int i = 0; i < past[k]; ++i)
+                xs[std::size_t(i)] = foot + 1.0;
+            const State st = stateAt(s, xs, vs, times[k]);
+            track.add((long long)k, st.t, st.p.col(0), st.v.col(0), Eigen::Vector3d::Zero(), ConservationSample{},
+                      measureStreet(s, st));
+        }
+        MotionChart chart(ChartKind::FootRate);
+        ChartUnits units;
+        units.streetBlocks = s.blocks;
+        chart.configure(sceneInfo(SceneId::Street), 0, units);
+        chart.setTimeSpan(30.0); // the rate's window is 30 / 60 = 0.5 s
+        chart.showTrack(track, 600);
+        QCOMPARE(chart.shownAxes(), (std::vector<int>{0, 1, 2}));
+        const QList<QPointF> points = chart.line(0)->points();
+        QCOMPARE(points.size(), qsizetype(times.size()));
+        const std::vector<double> expected = {0.0, 0.0, 0.0, 10.0, 10.0, 0.0, 0.0};
+        for (std::size_t k = 0; k < expected.size(); ++k)
+            QCOMPARE(points[qsizetype(k)].y(), expected[k]);
+        QVERIFY(chart.line(1)->points().size() > 0);
+        for (const QPointF& p : chart.line(1)->points())
+            QCOMPARE(p.y(), 0.0); // nobody reached the second foot
+    }
+
+    void trackThinningKeepsTheStreetColumnsWithTheirTimes()
+    {
+        MotionTrack track(4);
+        for (long long k = 0; k < 20; ++k) {
+            StreetSample sample;
+            sample.pastFoot[0] = double(k);
+            track.add(k, double(k), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                      ConservationSample{}, sample);
+        }
+        QCOMPARE(track.pastFoot(0).size(), track.t().size());
+        for (std::size_t i = 0; i < track.t().size(); ++i)
+            QCOMPARE(track.pastFoot(0)[i], track.t()[i]);
+    }
+
+    void chartDataCsvCarriesTheStreetsCountsAndSpeeds()
+    {
+        MotionTrack track;
+        StreetSample sample;
+        sample.pastFoot = {7, 3, 1, 0, 0};
+        sample.speed = {0.5, 2.0, 6.5, 11.25};
+        track.add(0, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                  ConservationSample{}, sample);
+        ChartData data;
+        data.run = &track;
+        data.streetBlocks = 3;
+        std::ostringstream out;
+        writeChartCsv(out, data);
+        std::istringstream lines(out.str());
+        std::string header, row;
+        std::getline(lines, header);
+        std::getline(lines, row);
+        QVERIFY(header.ends_with(",past_foot_1 [balls],past_foot_2 [balls],past_foot_3 [balls],speed_p10 [m/s],"
+                                 "speed_median [m/s],speed_p90 [m/s],speed_max [m/s]"));
+        QVERIFY(row.ends_with(",7,3,1,0.5,2,6.5,11.25"));
+        data.streetBlocks = 0; // another stage: no street columns
+        std::ostringstream plain;
+        writeChartCsv(plain, data);
+        QVERIFY(plain.str().find("past_foot") == std::string::npos);
+    }
+
+    void streetChartsBelongToTheStreetOnly()
+    {
+        for (const SceneInfo* s : allScenes()) {
+            const bool street = s->id == SceneId::Street;
+            QCOMPARE(chartApplies(ChartKind::FootRate, s->id), street);
+            QCOMPARE(chartApplies(ChartKind::Speeds, s->id), street);
+        }
+        QCOMPARE(parseChartKind("foot-rate"), std::optional(ChartKind::FootRate));
+        QCOMPARE(parseChartKind("speeds"), std::optional(ChartKind::Speeds));
+    }
+
+    void chartPanelShowsTheStreetsChartsAtAReadableHeight()
+    {
+        ChartPanel panel;
+        panel.resize(600, 4000); // room for every chart on one page
+        ChartUnits units;
+        units.streetBlocks = 3;
+        panel.configure(sceneInfo(SceneId::Street), 10, 0, 30.0, units);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        for (ChartKind kind : {ChartKind::Energy, ChartKind::FootRate, ChartKind::Speeds}) {
+            QVERIFY(panel.chartShown(kind));
+            QVERIFY2(panel.chartView(kind)->height() >= 200, chartKey(kind).data());
+        }
+        QVERIFY(!panel.chartShown(ChartKind::Activity) || !panel.chartView(ChartKind::Activity)->isVisible());
+    }
+
+    void reportModelIsNotOfferedForTheStreet()
+    {
+        RunOptionsPanel panel;
+        RunOptions options;
+        options.model = ModelKind::Physical;
+        options.integrator = Integrator::Event;
+        options.steps = 100;
+        auto reportItem = [&](QComboBox* box, int data) {
+            return qobject_cast<QStandardItemModel*>(box->model())->item(box->findData(data));
+        };
+        panel.showOptions(sceneInfo(SceneId::Street), options);
+        auto* reason = panel.findChild<QLabel*>("noReportModel");
+        QVERIFY(reason);
+        QVERIFY(!reason->isHidden());
+        QCOMPARE(reason->text(), RunOptionsPanel::noReportModelReason());
+        QVERIFY(reason->text().contains("3.1"));
+        QVERIFY(!reportItem(panel.modelBox(), int(ModelKind::Report))->isEnabled());
+        QVERIFY(!reportItem(panel.compareBox(), int(ModelKind::Report) * 100)->isEnabled());
+        // Back in a stage of the report the model is offered again, with no reason shown.
+        panel.showOptions(sceneInfo(SceneId::ManyBalls), options);
+        QVERIFY(reason->isHidden());
+        QVERIFY(reportItem(panel.modelBox(), int(ModelKind::Report))->isEnabled());
+        QVERIFY(!RunOptionsPanel::reportModelOffered(SceneId::Street));
+        QVERIFY(RunOptionsPanel::reportModelOffered(SceneId::ManyBalls));
+    }
+
+    void streetIsDrawnAsRoadHousesAndCars()
+    {
+        const SceneLayout plain = layoutFor(streetSpec(10, 0));
+        QVERIFY(plain.street);
+        QCOMPARE(plain.balls, 10);
+        QCOMPARE(plain.region.min().x(), plain.street->xTop);
+        QCOMPARE(plain.region.max().x(), plain.street->xFoot);
+        const SceneGeometry g = buildSceneGeometry(plain, "m");
+        QVERIFY(g.floor.size() > 36 * plain.street->boxes.size() / 2); // the road, crossings, sidewalks, wall
+        QVERIFY(!g.cutaway.empty());                                   // the near houses
+        QVERIFY(g.walls.empty());                                      // no box around the street
+        bool foot = false;
+        for (const SceneLabel& l : g.labels)
+            foot = foot || (l.text == "foot" && std::abs(l.at.x() - float(plain.street->xFoot)) < 1e-3f);
+        QVERIFY(foot);
+        // Six parked cars: six boxes of 12 triangles more.
+        const SceneGeometry withCars = buildSceneGeometry(layoutFor(streetSpec(10, 6)), "m");
+        QCOMPARE(withCars.floor.size(), g.floor.size() + 6 * 36);
+        for (const FlatVertex& v : withCars.floor)
+            QVERIFY(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.r));
+    }
+
+    void footShotLooksUpTheWholeStreetFromBeyondTheFoot()
+    {
+        const street::Layout s = defaultStreet();
+        const QSize view(800, 600);
+        const CameraPose pose = streetPose(s, StreetShot::Foot, 800.0f / 600.0f);
+        OrbitCamera camera;
+        camera.setPose(pose.target, pose.yaw, pose.pitch, pose.distance, 400.0f);
+        QVERIFY(camera.eye().x() > float(s.xFoot)); // past the foot
+        QVERIFY(camera.eye().y() < 3.0f);           // low on the road
+        QPointF top, foot;
+        QVERIFY(camera.project(QVector3D(float(s.xTop) + 2.0f, float(s.height), 0.0f), view, top));
+        QVERIFY(camera.project(QVector3D(float(s.xFoot) - 1.0f, 0.0f, 0.0f), view, foot));
+        QVERIFY(onScreen(top, view));
+        QVERIFY(onScreen(foot, view));
+        QVERIFY(top.y() < foot.y()); // the top of the hill above the foot in the picture
+    }
+
+    void sideShotShowsTheProfileTopLeftFootRight()
+    {
+        const street::Layout s = defaultStreet();
+        const QSize view(800, 600);
+        const CameraPose pose = streetPose(s, StreetShot::Side, 800.0f / 600.0f);
+        OrbitCamera camera;
+        camera.setPose(pose.target, pose.yaw, pose.pitch, pose.distance, 400.0f);
+        QVERIFY(camera.eye().z() > float(s.width)); // out beside the street
+        QPointF top, foot;
+        QVERIFY(camera.project(QVector3D(float(s.xTop), float(s.height), 0.0f), view, top));
+        QVERIFY(camera.project(QVector3D(float(s.xFoot), 0.0f, 0.0f), view, foot));
+        QVERIFY(onScreen(top, view) && onScreen(foot, view));
+        QVERIFY(top.x() < foot.x() && top.y() < foot.y());
+    }
+
+    void floodShotFollowsTheFrontAndIgnoresGoneBallsAndALoneRunaway()
+    {
+        const street::Layout s = defaultStreet();
+        std::vector<float> xyz;
+        for (int i = 0; i < 400; ++i) // the flood: x from 0 to 39.9
+            xyz.insert(xyz.end(), {float(i) * 0.1f, 60.0f, 0.0f});
+        xyz.insert(xyz.end(), {200.0f, 10.0f, 0.0f});                // one runaway far ahead
+        xyz.insert(xyz.end(), {float(s.xFoot) + 1.0f, 0.03f, 0.0f}); // one gone past the foot
+        const std::optional<float> front = floodFront(s, xyz);
+        QVERIFY(front);
+        QVERIFY(*front > 38.0f && *front < 40.0f);
+        const CameraPose near = streetPose(s, StreetShot::Flood, 1.3f, 40.0f);
+        const CameraPose far = streetPose(s, StreetShot::Flood, 1.3f, 150.0f);
+        QVERIFY(far.target.x() - near.target.x() > 100.0f); // the camera moved down with the front
+        QVERIFY(ballHidden(s, float(s.xFoot) + 0.01f));
+        QVERIFY(!ballHidden(s, float(s.xFoot) - 0.01f));
+        QVERIFY(!floodFront(s, {float(s.xFoot) + 1.0f, 0.0f, 0.0f})); // nobody on the street
+    }
+
+    void navigatorShowsTheStreetsEquationsWithNumbers()
+    {
+        RunSpec spec = streetSpec();
+        spec.params.parse("mu", "0");
+        const QString smooth = StreetEquations::html(spec);
+        // Smooth (mu = 0): sliding, a = g sin(17 deg) = 9.82 * 0.2924 = 2.87 m/s^2.
+        QVERIFY(smooth.contains("St2"));
+        QVERIFY(smooth.contains("2.87"));
+        QVERIFY(smooth.contains(RunOptionsPanel::noReportModelReason().toHtmlEscaped()));
+        // mu = 0.5 >= q tan(theta) / (1 + q) = 0.0874: rolling, a = 2.87 / 1.4 = 2.05 m/s^2.
+        spec.params.parse("mu", "0.5");
+        const QString rough = StreetEquations::html(spec);
+        QVERIFY(rough.contains("St1"));
+        QVERIFY(rough.contains("2.05"));
+        QVERIFY(rough.contains("0.0874"));
+        QVERIFY(StreetEquations::html(RunSpec(SceneId::ManyBalls)).isEmpty());
+    }
+};
+
+QTEST_MAIN(UiStreet)
+#include "test_ui_street.moc"

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#include "street_camera.h"
+
+#include "core/street/street_census.h"
+
+#include <QtMath>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ab::ui {
+
+namespace {
+
+// The pose that looks from `eye` at `target`: OrbitCamera's eye is target + d (cos p sin y,
+// sin p, cos p cos y), so d = |eye - target|, p = asin(dy / d), y = atan2(dx, dz).
+CameraPose lookFrom(const QVector3D& eye, const QVector3D& target)
+{
+    const QVector3D d = eye - target;
+    const float len = std::max(d.length(), 1e-3f);
+    return {target, qRadiansToDegrees(std::atan2(d.x(), d.z())),
+            qRadiansToDegrees(std::asin(std::clamp(d.y() / len, -1.0f, 1.0f))), len};
+}
+
+} // namespace
+
+bool ballHidden(const street::Layout& street, float x)
+{
+    return street::hasLeft(street, double(x));
+}
+
+CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, std::optional<float> front)
+{
+    const auto across = float(0.5 * s.width + s.sidewalk);
+    switch (shot) {
+    case StreetShot::Foot: {
+        // The advert's shot: a long lens low on the flat street 45 m past the foot, looking
+        // up the hill. Seen from there the road's top (xTop, height) and its foot (xFoot, 0)
+        // are at elevations atan2(height - h, X - xTop) and atan2(-h, X - xFoot); the camera
+        // aims half-way between them, and its field of view holds both with a quarter to
+        // spare. A long lens flattens the depth: the whole hill stands up in the picture.
+        const QVector3D eye(float(s.xFoot) + 45.0f, 1.5f, 0.0f);
+        const float top = std::atan2(float(s.houseTop) - eye.y(), eye.x() - float(s.xTop));
+        const float foot = std::atan2(-eye.y(), eye.x() - float(s.xFoot));
+        const float aim = 0.5f * (top + foot), reach = 0.5f * float(s.xFoot - s.xTop);
+        const QVector3D target = eye + reach * QVector3D(-std::cos(aim), std::sin(aim), 0.0f);
+        CameraPose pose = lookFrom(eye, target);
+        pose.fovY = std::clamp(1.25f * qRadiansToDegrees(top - foot), 10.0f, 40.0f);
+        return pose;
+    }
+    case StreetShot::Side: {
+        // From +z, level with the street's middle, far enough back to hold it all.
+        OrbitCamera c;
+        c.frame({float(s.xTop), 0.0f, -across}, {float(s.xFoot), float(s.height), across}, 0.0f, 6.0f, aspect);
+        return {c.target(), c.yaw(), c.pitch(), c.distance() * 0.92f};
+    }
+    case StreetShot::Flood: {
+        // Ahead of the front and above it, over the near sidewalk, looking back up at it.
+        const float x = front ? std::clamp(*front, float(s.xTop), float(s.xFoot)) : float(s.hopper.x1);
+        const float ahead = std::min(x + 30.0f, float(s.xFoot) + 20.0f);
+        const QVector3D target(x - 8.0f, float(s.roadY(x - 8.0)) + 1.0f, 0.0f);
+        return lookFrom({ahead, float(s.roadY(ahead)) + 14.0f, 0.45f * float(s.width)}, target);
+    }
+    }
+    return {};
+}
+
+std::optional<float> floodFront(const street::Layout& s, const std::vector<float>& xyz)
+{
+    std::vector<float> xs;
+    xs.reserve(xyz.size() / 3);
+    for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+        if (std::isfinite(xyz[i]) && !ballHidden(s, xyz[i]))
+            xs.push_back(xyz[i]);
+    if (xs.empty())
+        return std::nullopt;
+    // The element with xs.size() / 200 balls beyond it: the 99.5th percentile.
+    const std::size_t k = xs.size() - 1 - xs.size() / 200;
+    std::nth_element(xs.begin(), xs.begin() + std::ptrdiff_t(k), xs.end());
+    return xs[k];
+}
+
+} // namespace ab::ui

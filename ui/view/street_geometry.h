@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// The street of stage 5 as the 3D view draws it: every box of the core's layout
+// (core/street/street_layout.h) as a shaded block, the road asphalt grey with a dashed
+// centre line, the crossings paler with zebra stripes, the sidewalks concrete, the parked
+// cars in colours, and a terrace of painted house fronts along both sides whose roofs
+// follow the road. The houses on the near side (+z) go to their own list, so that the side
+// shot can leave them out and see the street in profile.
+#pragma once
+
+#include "scene_geometry.h"
+
+namespace ab::ui {
+
+// Fills `g` (floor: opaque triangles; cutaway: the +z houses; lines; labels; the framed
+// region) for `street`, labels in `lengthUnit`.
+void addStreetGeometry(SceneGeometry& g, const street::Layout& street, const QString& lengthUnit);
+
+} // namespace ab::ui
