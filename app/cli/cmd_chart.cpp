@@ -13,16 +13,19 @@
 #include "../../core/diagnostics/conservation.h"
 #include "../../core/io/atomic_file.h"
 #include "../../core/reference/reference.h"
+#include "../../core/street/street_layout.h"
 #include "../../ui/charts/chart_data_csv.h"
 #include "../../ui/charts/chart_recipe.h"
 #include "../../ui/charts/headless_app.h"
 #include "../../ui/charts/run_description.h"
+#include "../../ui/charts/street_sample.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <ostream>
 
 namespace ab::cli {
@@ -123,13 +126,21 @@ ui::MotionTrack simulate(Simulation& sim, long long steps, int ball, std::ostrea
     ui::MotionTrack track;
     long long index = 0;
     bool healthy = true;
+    // The street's charts (foot rate, speeds) read its layout at every state.
+    const std::optional<street::Layout> layout = sim.spec().scene == SceneId::Street
+                                                     ? std::optional(street::Layout::fromParams(sim.spec().params))
+                                                     : std::nullopt;
     runRecorded(
         sim, sim.start(), steps, 1,
         [&](const State& s) {
             healthy = healthy && s.p.allFinite() && s.v.allFinite();
             if (!healthy)
                 return;
-            track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s));
+            if (layout)
+                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s),
+                          ui::measureStreet(*layout, s));
+            else
+                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s));
         },
         [&] { return !healthy || interrupted(); });
     throwIfInterrupted();
@@ -202,9 +213,12 @@ void checkApplies(ui::ChartKind kind, const RunSpec& spec)
     if (kind == ui::ChartKind::Spin)
         throw InputError("--chart: the spin chart needs balls that turn: --model physical with mu > 0 and beta > -1, "
                          "or a start spin (w0, w1, w2, spin)");
+    const bool street = kind == ui::ChartKind::FootRate || kind == ui::ChartKind::Speeds;
     throw InputError("--chart: the " + std::string(ui::chartKey(kind)) + " chart is for " +
-                     (kind == ui::ChartKind::Momentum ? "two-balls and many-balls" : "many-balls") + " only, not " +
-                     key);
+                     (kind == ui::ChartKind::Momentum ? "two-balls and many-balls"
+                      : street                        ? "the street"
+                                                      : "many-balls") +
+                     " only, not " + key);
 }
 
 struct ChartRequest {
@@ -277,7 +291,7 @@ int chartCommand(Parsed& args, std::ostream&, std::ostream& err)
     recipe.kind = kind;
     recipe.scene = &sim->scene();
     recipe.ball = ball;
-    recipe.units = ui::chartUnitsOf(meter);
+    recipe.units = ui::chartUnitsOf(meter, setup.spec);
     recipe.tEnd = tEnd;
     recipe.run = &track;
     recipe.runName = QString::fromStdString(
@@ -305,6 +319,7 @@ int chartCommand(Parsed& args, std::ostream&, std::ostream& err)
         data.lengthUnit = sim->scene().lengthUnit;
         data.perUnitMass = recipe.units.perUnitMass;
         data.spins = recipe.units.spins;
+        data.streetBlocks = recipe.units.streetBlocks;
         data.comments =
             ui::RunDescription::comments(facts, other ? &compareFacts : nullptr, bool(r), ball, start.size());
         writeFileAtomically(*dataPath, [&](std::ostream& out) { ui::writeChartCsv(out, data); });

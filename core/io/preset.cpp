@@ -502,8 +502,8 @@ void savePreset(const std::filesystem::path& path, const Preset& preset)
 
 const std::vector<std::string>& presetChartKeys()
 {
-    static const std::vector<std::string> keys{"position", "velocity",   "energy", "momentum",
-                                               "activity", "difference", "spin"};
+    static const std::vector<std::string> keys{"position",   "velocity", "energy",    "momentum", "activity",
+                                               "difference", "spin",     "foot-rate", "speeds"};
     return keys;
 }
 
