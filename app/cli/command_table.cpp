@@ -21,9 +21,10 @@ using V = Values;
 std::vector<OptionSpec> runOptions()
 {
     return {
-        {"model", "report|physical", "the model that computes the run", "report", false, V::Model},
-        {"integrator", "NAME", "the physical model's integrator (amazeballs-cli list names them)", "symplectic-euler",
-         false, V::Integrator},
+        {"model", "report|physical", "the model that computes the run", "report; physical for the street", false,
+         V::Model},
+        {"integrator", "NAME", "the physical model's integrator (amazeballs-cli list names them)",
+         "symplectic-euler; event for the street", false, V::Integrator},
         {"impacts", "located|step-end",
          "located: each impact's time found inside the step; step-end: as the report, at the step's end", "located",
          false, V::Impacts},
