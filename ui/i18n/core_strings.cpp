@@ -420,7 +420,7 @@ const char* const listed[] = {
                       "straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street."),
     QT_TRANSLATE_NOOP(
         "core", "Sony's advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper "
-                "over the top of three 17 deg blocks with parked cars along the kerbs, restitution 0.85 and grippy "
+                "over the top of three 17 deg blocks, with restitution 0.85 and grippy "
                 "rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block "
                 "within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away."),
     QT_TRANSLATE_NOOP("core", "Superballs: e and beta near 1"),
