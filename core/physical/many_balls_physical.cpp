@@ -29,6 +29,7 @@
 //    before spin existed, so their runs are the same bit for bit, at the same cost.
 #include "many_balls_physical.h"
 
+#include "engine_step.h"
 #include "many_balls_flight.h"
 #include "physical_models.h"
 #include "worker_pool.h"
@@ -294,12 +295,7 @@ public:
     void step(State& s, State& next) override
     {
         engine_.load(s);
-        engine_.step();
-        engine_.store(next);
-        next.t = s.t + dt_;
-        next.count = s.count;
-        next.impacts = s.impacts + engine_.impactsLastStep();
-        next.halted = false;
+        stepEngine(engine_, s, next, dt_);
     }
 
 private:

@@ -73,22 +73,29 @@ inline double timeToWall(double d, double b, double q, double T)
     return t <= T ? t : kNever;
 }
 
-// Walton's impulse at the wall of axis a with inward normal n = side e_a, per unit mass:
-// the slip g_t = v_t - r w x n (S1), the factor c of S9-S10 (impacts.h) with the normal
-// impulse pn = approach + rebound speed, then dv = -c q g_t and dw = c n x g_t / r (S13:
-// the angular momentum about the contact point, r n x v + q r^2 w, is kept).
-inline void waltonAtWall(double v[3], double w[3], int a, double side, double pn, const Friction& f)
+// Walton's impulse at a plane with unit normal n towards the ball, per unit mass: the slip
+// g_t = v_t - r w x n (S1), the factor c of S9-S10 (impacts.h) with the normal impulse pn =
+// approach + rebound speed, then dv = -c q g_t and dw = c n x g_t / r (S13: the angular
+// momentum about the contact point, r n x v + q r^2 w, is kept). The street's faces use it
+// with any n (street_contact.h).
+inline void waltonAtPlane(Eigen::Vector3d& v, Eigen::Vector3d& w, const Eigen::Vector3d& n, double pn,
+                          const Friction& f)
 {
-    const Eigen::Vector3d n = side * Eigen::Vector3d::Unit(a);
-    Eigen::Vector3d vel(v[0], v[1], v[2]), omega(w[0], w[1], w[2]);
-    Eigen::Vector3d g = vel - f.r * omega.cross(n); // S1
-    g[a] = 0.0;
+    Eigen::Vector3d g = v - f.r * w.cross(n); // S1
+    g -= g.dot(n) * n;
     const double slip = g.norm();
     if (!(slip > 0.0))
         return;
     const double c = waltonFactor(f.q, f.beta, slip, f.mu * pn);
-    vel -= c * f.q * g;            // dv = P_t / m = -c q g_t            (S9-S10)
-    omega += c / f.r * n.cross(g); // dw = -r n x P_t / I = c n x g_t / r (S13)
+    v -= c * f.q * g;          // dv = P_t / m = -c q g_t            (S9-S10)
+    w += c / f.r * n.cross(g); // dw = -r n x P_t / I = c n x g_t / r (S13)
+}
+
+// waltonAtPlane at the wall of axis a with inward normal n = side e_a.
+inline void waltonAtWall(double v[3], double w[3], int a, double side, double pn, const Friction& f)
+{
+    Eigen::Vector3d vel(v[0], v[1], v[2]), omega(w[0], w[1], w[2]);
+    waltonAtPlane(vel, omega, side * Eigen::Vector3d::Unit(a), pn, f);
     for (int k = 0; k < 3; ++k)
         v[k] = vel[k], w[k] = omega[k];
 }

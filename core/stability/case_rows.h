@@ -14,6 +14,25 @@ namespace ab::stability {
 // Three significant figures for settings and notes.
 std::string num(double x);
 
+// A run's energy at its start and at the last state seen: the error a probe reports is the
+// relative change, end / start - 1 (none while nothing was seen or the start holds none).
+struct EnergyTrack {
+    double start = 0.0, end = 0.0;
+    bool started = false;
+
+    void add(double e)
+    {
+        if (!started)
+            start = e, started = true;
+        end = e;
+    }
+    std::optional<double> error() const
+    {
+        return started && start > 0.0 ? std::optional(end / start - 1.0) : std::nullopt;
+    }
+    double ratio() const { return end / start; }
+};
+
 extern const std::vector<Integrator> impulseIntegrators; // every integrator of impulse contacts
 extern const std::vector<Integrator> springIntegrators;  // every integrator of the spring floor
 

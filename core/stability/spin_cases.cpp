@@ -28,20 +28,11 @@ public:
         }
     }
 
-    void observe(const State& s) override
-    {
-        const double e = energy(s);
-        if (!started_)
-            e0_ = e, started_ = true;
-        end_ = e;
-    }
-    std::optional<double> error() const override
-    {
-        return started_ && e0_ > 0.0 ? std::optional(end_ / e0_ - 1.0) : std::nullopt;
-    }
+    void observe(const State& s) override { track_.add(energy(s)); }
+    std::optional<double> error() const override { return track_.error(); }
     std::string note() const override
     {
-        return "energy at the end (rotation counted) " + num(end_ / e0_) + " x the start";
+        return "energy at the end (rotation counted) " + num(track_.ratio()) + " x the start";
     }
 
 private:
@@ -58,8 +49,7 @@ private:
 
     const physical::World* world_;
     double g_ = 0.0, q_ = 0.0, r_ = 0.0, floor_ = 0.0;
-    double e0_ = 0.0, end_ = 0.0;
-    bool started_ = false;
+    EnergyTrack track_;
 };
 
 std::unique_ptr<Probe> spinDrift(const Simulation& sim)

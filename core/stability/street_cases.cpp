@@ -24,27 +24,22 @@ public:
 
     void observe(const State& s) override
     {
-        if (left_ || (left_ = street::census(layout_, s).left > 0))
-            return;
-        const double e = meter_.measure(s).energy.total();
-        if (!started_)
-            e0_ = e, started_ = true;
-        end_ = e;
+        if (!left_)
+            left_ = street::census(layout_, s).left > 0;
+        if (!left_)
+            track_.add(meter_.measure(s).energy.total());
     }
-    std::optional<double> error() const override
-    {
-        return started_ && e0_ > 0.0 ? std::optional(end_ / e0_ - 1.0) : std::nullopt;
-    }
+    std::optional<double> error() const override { return track_.error(); }
     std::string note() const override
     {
-        return "energy " + num(end_ / e0_) + " x the start " + (left_ ? "when the first ball left" : "at the end");
+        return "energy " + num(track_.ratio()) + " x the start " + (left_ ? "when the first ball left" : "at the end");
     }
 
 private:
     ConservationMeter meter_;
     street::Layout layout_;
-    double e0_ = 0.0, end_ = 0.0;
-    bool started_ = false, left_ = false;
+    EnergyTrack track_;
+    bool left_ = false;
 };
 
 std::unique_ptr<Probe> streetEnergy(const Simulation& sim)

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What the street's charts and its status line count in a state (docs/street.md): how many
-// balls have passed the foot of each block, how many have left the run at the street's
-// open foot, and the distribution of the speeds of those still on the street.
+// What the street's charts count in a state (docs/street.md): how many balls have passed the
+// foot of each block, and how many have left the run at the street's open foot.
 #pragma once
 
 #include "street_layout.h"
@@ -16,7 +15,6 @@ struct Census {
     std::vector<int> pastFoot; // per block: balls whose centres are beyond that block's foot
     int left = 0;              // balls that left the run at the open foot (centre x > xFoot)
     int onStreet = 0;          // the others
-    double maxSpeed = 0.0;     // over the balls on the street
 };
 
 // A ball has left the run once its centre is beyond the open foot; the engine keeps it there,
@@ -27,9 +25,5 @@ inline bool hasLeft(const Layout& layout, double x)
 }
 
 Census census(const Layout& layout, const State& s);
-
-// Counts of the speeds |v| of the balls on the street in `bins` equal bins over
-// [0, top] (a speed above top falls in the last bin).
-std::vector<int> speedHistogram(const Layout& layout, const State& s, int bins, double top);
 
 } // namespace ab::street

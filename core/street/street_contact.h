@@ -41,20 +41,24 @@ struct FaceRef {
     int face = 0;
     bool valid() const { return item >= 0; }
     int axis() const { return face >> 1; }
-    double side() const { return (face & 1) != 0 ? 1.0 : -1.0; }
 };
+
+// The side s of face `face` along its axis: +1 or -1.
+inline double faceSide(int face)
+{
+    return (face & 1) != 0 ? 1.0 : -1.0;
+}
 
 inline Eigen::Vector3d faceNormal(const Box& b, int face)
 {
-    return ((face & 1) != 0 ? 1.0 : -1.0) * b.axis(face >> 1);
+    return faceSide(face) * b.axis(face >> 1);
 }
 
 // d of St5 at p: the distance of the centre from the face's plane less r (negative: overlap).
 inline double faceGap(const Box& b, int face, const Eigen::Vector3d& p, double r)
 {
     const int a = face >> 1;
-    const double side = (face & 1) != 0 ? 1.0 : -1.0;
-    return side * b.toLocal(p)[a] - b.half[a] - r;
+    return faceSide(face) * b.toLocal(p)[a] - b.half[a] - r;
 }
 
 // The centre lies over the face: its other two box coordinates within the box (grown by `slack`).
@@ -76,21 +80,6 @@ struct Surface {
     bool rough = false;
 };
 
-// Walton's impulse at a face with outward normal n (S9-S10, S13), per unit mass: the slip
-// g_t = v_t - r w x n, c of waltonFactor with the normal impulse pn, then dv = -c q g_t and
-// dw = c n x g_t / r, which keeps the angular momentum about the contact point.
-inline void waltonAtFace(Eigen::Vector3d& v, Eigen::Vector3d& w, const Eigen::Vector3d& n, double pn, const Friction& f)
-{
-    Eigen::Vector3d gt = v - f.r * w.cross(n); // S1
-    gt -= gt.dot(n) * n;
-    const double slip = gt.norm();
-    if (!(slip > 0.0))
-        return;
-    const double c = physical::waltonFactor(f.q, f.beta, slip, f.mu * pn);
-    v -= c * f.q * gt;
-    w += c / f.r * n.cross(gt);
-}
-
 // An impact along the outward normal n (point 3). Returns true when the ball rebounds,
 // false when it stops on the face (it then rests there if `canRest`) or was not approaching.
 // `approached` is set when the ball moved towards the face.
@@ -106,7 +95,7 @@ inline bool impactAlong(Eigen::Vector3d& v, Eigen::Vector3d& w, const Eigen::Vec
     const double after = bounces ? rebound : 0.0;
     v += (after - vn) * n; // v_n'' = -e v_n' (eq 2.3), or 0 at rest
     if (s.rough)
-        waltonAtFace(v, w, n, after - vn, s.friction);
+        physical::manyballs::waltonAtPlane(v, w, n, after - vn, s.friction);
     return bounces;
 }
 

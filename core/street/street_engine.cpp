@@ -40,7 +40,6 @@ Engine::Engine(Layout layout, const Settings& settings)
     balls_.assign(n, Ball{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
     support_.assign(n, FaceRef{});
     touched_.assign(n, 0);
-    workerMaxSpeed2_.assign(static_cast<std::size_t>(pool_->size()), 0.0);
     workerImpacts_.assign(static_cast<std::size_t>(pool_->size()), 0);
     sizeColumns();
 }
@@ -67,6 +66,19 @@ void Engine::load(const State& s)
     }
     maxSpeed_ = std::sqrt(maxSpeed2);
     covered_ = 0.0; // no contact has looked ahead from this state yet
+    loaded_ = true;
+}
+
+bool Engine::holds(const State& s) const
+{
+    if (!loaded_ || s.size() != settings_.n || !s.spins())
+        return false;
+    for (int i = 0; i < settings_.n; ++i) {
+        const Ball& b = balls_[static_cast<std::size_t>(i)];
+        if (s.p.col(i) != b.p || s.v.col(i) != b.v || s.w.col(i) != b.w)
+            return false;
+    }
+    return true;
 }
 
 void Engine::store(State& s) const
@@ -86,7 +98,7 @@ void Engine::store(State& s) const
 
 int Engine::substepsFor(double dt) const
 {
-    // The fastest ball, gaining at most g dt, should travel at most r/2 in a substep.
+    // The fastest ball, gaining at most g dt, should travel at most r in a substep.
     const double travel = (maxSpeed_ + settings_.g * dt) * dt;
     const double count = std::ceil(travel / (kMaxTravel * settings_.radius));
     if (!(count > 1.0))
@@ -131,7 +143,6 @@ void Engine::contacts(double h)
 
 void Engine::substep(double h)
 {
-    std::fill(workerMaxSpeed2_.begin(), workerMaxSpeed2_.end(), 0.0);
     // The contacts of the last substep looked ahead by its length: a longer substep (a state
     // just loaded, or slower balls) looks ahead again first, so no pair meets unseen.
     if (h > covered_)

@@ -75,12 +75,13 @@ public:
     void store(State& s) const;
     void step();
 
+    // `s` holds exactly the balls the engine holds (the state it stored last, say): stepping
+    // on needs no load, which would find the resting contacts again.
+    bool holds(const State& s) const;
+
     long long impactsLastStep() const { return impacts_; }
-    int onStreet() const { return static_cast<int>(active_.size()); }
     const Layout& layout() const { return layout_; }
     const Settings& settings() const { return settings_; }
-    // The face ball i rests on, if any.
-    FaceRef support(int i) const { return support_[static_cast<std::size_t>(i)]; }
     std::size_t bytes() const;
 
 private:
@@ -94,7 +95,7 @@ private:
     void settle(int i, long long& impacts);
     void findSupport(int i);
     void sizeColumns();
-    int columnOf(const Eigen::Vector3d& p, int& cx, int& cz) const;
+    std::uint32_t columnOf(const Eigen::Vector3d& p) const;
     void buildCells();
     void findPairs(int chunk);
     // One pass over the listed pairs, the speculative contacts of pairs apart that meet
@@ -124,11 +125,11 @@ private:
     std::vector<std::uint32_t> bucket_, next_, columnHead_;
     std::vector<std::vector<broadphase::Pair>> pairs_; // per chunk of active balls
     std::vector<std::uint8_t> touched_;                // moved by a pair this substep
-    std::vector<double> workerMaxSpeed2_;
     std::vector<long long> workerImpacts_;
     long long impacts_ = 0;
     double maxSpeed_ = 0.0;
     double covered_ = 0.0; // how far ahead the last contact phase looked for pairs that meet
+    bool loaded_ = false;  // a state was loaded: the balls are a run's
 };
 
 std::unique_ptr<Simulation> makeStreet(const RunSpec& spec, double dt);

@@ -14,7 +14,7 @@ namespace {
 
 constexpr int kMaxEvents = 32; // events a ball may meet in one substep; the rest of it is flown plainly
 // A ball rests on a face while its centre is this close to r from the face (relative to r)
-// and it moves this slowly off it (relative to the rest speed, or absolutely).
+// and it moves off it no faster than this (m/s).
 constexpr double kRestGap = 1e-9;
 constexpr double kLeaveSpeed = 1e-9;
 
@@ -77,7 +77,7 @@ void nextFace(const Layout& layout, double r, const Eigen::Vector3d& p, const Ei
             if (sup.valid() && sup.item == item && sup.face == face)
                 continue;
             const int k = face >> 1;
-            const double side = (face & 1) != 0 ? 1.0 : -1.0;
+            const double side = faceSide(face);
             const double d0 = side * lp[k] - box.half[k] - r; // St5
             if (d0 < -0.5 * r)
                 continue; // the centre is not outside this face: another face or an edge holds it
@@ -268,8 +268,7 @@ void Engine::settle(int i, long long& impacts)
                 ++faces;
                 axis = k;
             }
-        Eigen::Vector3d n = box.toWorld(away) - box.toWorld(Eigen::Vector3d::Zero());
-        n.normalize();
+        const Eigen::Vector3d n = box.rotateOut(away); // a unit vector turned into the world
         b.p += (r - dist) * n;
         bool approached = false;
         const bool onFace = faces == 1 && n.y() > 0.0;

@@ -40,9 +40,10 @@ Layout::Layout(double slopeRadians, int blocks_, double blockLength_, double cro
       sidewalk(sidewalk_), radius(radius_), blocks(blocks_), cars(cars_)
 {
     build(cars_, balls);
-    // A ball moves at most r/2 in a substep (street_engine.cpp), so items within 2 m + 2 r of
-    // its x are every item it can reach.
-    bin(kBinWidth + 2.0 * radius);
+    // A ball reaches r beyond its centre and moves about r in a substep (street_engine.cpp;
+    // an impulse between two balls can raise a speed by up to sqrt 2): items within 4 r of its
+    // x are every item it can touch.
+    bin(4.0 * radius);
 }
 
 namespace {
@@ -172,7 +173,7 @@ void Layout::bin(double pad)
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const Box& b = boxes[i];
         // The box's x extent: its centre +- the projections of its half extents on x.
-        const double reach = std::abs(std::cos(b.angle)) * b.half.x() + std::abs(std::sin(b.angle)) * b.half.y();
+        const double reach = std::abs(b.cosA) * b.half.x() + std::abs(b.sinA) * b.half.y();
         const double x0 = b.centre.x() - reach - pad, x1 = b.centre.x() + reach + pad;
         const auto first = static_cast<std::size_t>(
             std::clamp(std::floor((x0 - binLo_) / binWidth_), 0.0, static_cast<double>(bins - 1)));
@@ -211,14 +212,6 @@ double Layout::roadY(double x) const
             return top - drop; // the crossing after it
     }
     return 0.0;
-}
-
-Eigen::Vector3d Layout::roadNormal(double x) const
-{
-    for (int k = 0; k < blocks; ++k)
-        if (x > blockStartX[static_cast<std::size_t>(k)] && x < blockFootX[static_cast<std::size_t>(k)])
-            return {std::sin(slope), std::cos(slope), 0.0};
-    return Eigen::Vector3d::UnitY();
 }
 
 } // namespace ab::street

@@ -39,7 +39,7 @@ struct Box {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     double angle = 0.0;
     Eigen::Vector3d half = Eigen::Vector3d::Ones();
-    double cosA = 1.0, sinA = 0.0; // of `angle`, set by turn()
+    double cosA = 1.0, sinA = 0.0; // of `angle`
 
     Box(ItemKind k, int seg, const Eigen::Vector3d& c, double a, const Eigen::Vector3d& h)
         : kind(k), segment(seg), centre(c), angle(a), half(h), cosA(std::cos(a)), sinA(std::sin(a))
@@ -88,10 +88,8 @@ struct Layout {
     // The road's surface height at x (the crossings flat, the blocks sloping; the top
     // crossing's height beyond xTop, 0 beyond the foot).
     double roadY(double x) const;
-    // The outward unit normal of the road under x.
-    Eigen::Vector3d roadNormal(double x) const;
     // The items a ball whose centre has this x may touch within one substep: every box whose
-    // x extent, grown by `pad`, holds x (binned once, at construction).
+    // x extent, grown by a few radii, holds x (binned once, at construction).
     std::span<const std::uint16_t> itemsNear(double x) const;
     // Largest number of parked cars these blocks hold (two sides, one car a slot).
     static int carSlots(int blocks, double blockLength);

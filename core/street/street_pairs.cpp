@@ -39,8 +39,9 @@ constexpr std::uint32_t kEnd = 0xffffffffu; // the end of a column's list
 
 void Engine::sizeColumns()
 {
-    // The street's plan, every item's reach, in cells of at least the pair distance and at most
-    // about max(8 N, 2^20) cells in all (cells grow beyond that distance to respect it).
+    // Over the street's plan from the back wall to beyond the foot, in cells of at least the
+    // pair distance and at most about max(8 N, 2^20) cells in all (cells grow beyond that
+    // distance to respect it).
     const double reach = (2.0 + kSkin) * settings_.radius;
     columns_.x0 = layout_.xTop - 4.0;
     columns_.z0 = -(0.5 * layout_.width + layout_.sidewalk);
@@ -51,13 +52,13 @@ void Engine::sizeColumns()
     columns_.nz = std::max(1, static_cast<int>(std::ceil(lengthZ / columns_.side)));
 }
 
-int Engine::columnOf(const Eigen::Vector3d& p, int& cx, int& cz) const
+std::uint32_t Engine::columnOf(const Eigen::Vector3d& p) const
 {
     const double inv = 1.0 / columns_.side;
     // max/min clamps NaN to the first column too
-    cx = static_cast<int>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
-    cz = static_cast<int>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
-    return cx + columns_.nx * cz;
+    const auto cx = static_cast<int>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
+    const auto cz = static_cast<int>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
+    return static_cast<std::uint32_t>(cx + columns_.nx * cz);
 }
 
 void Engine::buildCells()
@@ -72,8 +73,7 @@ void Engine::buildCells()
     bucket_.resize(count);
     next_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-        int cx = 0, cz = 0;
-        const auto c = static_cast<std::uint32_t>(columnOf(balls_[static_cast<std::size_t>(active_[k])].p, cx, cz));
+        const std::uint32_t c = columnOf(balls_[static_cast<std::size_t>(active_[k])].p);
         bucket_[k] = c;
         next_[k] = columnHead_[c]; // each list runs from the latest ball to the earliest
         columnHead_[c] = static_cast<std::uint32_t>(k);
@@ -100,8 +100,8 @@ void Engine::findPairs(int chunk)
         const Eigen::Vector3d& p = balls_[static_cast<std::size_t>(active_[k])].p;
         for (std::uint32_t o = columnHead_[bucket_[k]]; o != kEnd && o > k; o = next_[o])
             test(k, p, o); // the later balls of its own column come first in its list
-        int cx = 0, cz = 0;
-        columnOf(p, cx, cz);
+        const auto nx = static_cast<std::uint32_t>(columns_.nx);
+        const auto cx = static_cast<int>(bucket_[k] % nx), cz = static_cast<int>(bucket_[k] / nx);
         for (const auto& d : kAfter) {
             const int x = cx + d[0], z = cz + d[1];
             if (x < 0 || x >= columns_.nx || z < 0 || z >= columns_.nz)

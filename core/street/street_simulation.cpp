@@ -3,6 +3,7 @@
 // scene's parameters, and the hopper's start.
 #include "street_engine.h"
 
+#include "../physical/engine_step.h"
 #include "../random.h"
 
 #include <cmath>
@@ -11,9 +12,6 @@ namespace ab::street {
 
 Settings Settings::fromSpec(const RunSpec& spec, double dt)
 {
-    if (spec.model != ModelKind::Physical)
-        throw InputError("--model: the report's rules stop at the box (report 3.1); the street is the physical "
-                         "model's: use --model physical");
     if (spec.integrator != Integrator::Event)
         throw InputError("--integrator: the street's flight is exact between events; " +
                          std::string(integratorKey(spec.integrator)) + " is not offered (use event)");
@@ -73,26 +71,13 @@ public:
     {
         // The engine keeps which balls rest on which face between steps; a state it did not
         // write itself (the first, a fork, an edit) is loaded and its contacts found again.
-        if (!(held_ && s.t == heldT_ && s.p == heldP_ && s.v == heldV_ && s.w == heldW_))
+        if (!engine_.holds(s))
             engine_.load(s);
-        engine_.step();
-        engine_.store(next);
-        next.t = s.t + dt_;
-        next.count = s.count;
-        next.impacts = s.impacts + engine_.impactsLastStep();
-        next.halted = false;
-        held_ = true;
-        heldT_ = next.t;
-        heldP_ = next.p;
-        heldV_ = next.v;
-        heldW_ = next.w;
+        physical::stepEngine(engine_, s, next, dt_);
     }
 
 private:
     Engine engine_;
-    bool held_ = false;
-    double heldT_ = 0.0;
-    Vec3Array heldP_, heldV_, heldW_;
 };
 
 } // namespace

@@ -55,6 +55,15 @@ State stateAt(const street::Layout& s, const std::vector<double>& xs, const std:
     return st;
 }
 
+// The camera of `shot` over a view of `size`.
+OrbitCamera cameraAt(const street::Layout& s, StreetShot shot, QSize size)
+{
+    const CameraPose pose = streetPose(s, shot, float(size.width()) / float(size.height()));
+    OrbitCamera camera;
+    camera.setPose(pose.target, pose.yaw, pose.pitch, pose.distance, 400.0f);
+    return camera;
+}
+
 bool onScreen(const QPointF& p, QSize size)
 {
     return p.x() >= 0 && p.y() >= 0 && p.x() <= size.width() && p.y() <= size.height();
@@ -243,9 +252,7 @@ private slots:
     {
         const street::Layout s = defaultStreet();
         const QSize view(800, 600);
-        const CameraPose pose = streetPose(s, StreetShot::Foot, 800.0f / 600.0f);
-        OrbitCamera camera;
-        camera.setPose(pose.target, pose.yaw, pose.pitch, pose.distance, 400.0f);
+        const OrbitCamera camera = cameraAt(s, StreetShot::Foot, view);
         QVERIFY(camera.eye().x() > float(s.xFoot)); // past the foot
         QVERIFY(camera.eye().y() < 3.0f);           // low on the road
         QPointF top, foot;
@@ -260,9 +267,7 @@ private slots:
     {
         const street::Layout s = defaultStreet();
         const QSize view(800, 600);
-        const CameraPose pose = streetPose(s, StreetShot::Side, 800.0f / 600.0f);
-        OrbitCamera camera;
-        camera.setPose(pose.target, pose.yaw, pose.pitch, pose.distance, 400.0f);
+        const OrbitCamera camera = cameraAt(s, StreetShot::Side, view);
         QVERIFY(camera.eye().z() > float(s.width)); // out beside the street
         QPointF top, foot;
         QVERIFY(camera.project(QVector3D(float(s.xTop), float(s.height), 0.0f), view, top));
