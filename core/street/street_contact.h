@@ -117,4 +117,16 @@ inline Eigen::Vector3d rollingSpin(const Eigen::Vector3d& v, const Eigen::Vector
     return n.cross(v) / r + w.dot(n) * n;
 }
 
+// A push out of a box that lifts the centre by `rise` (an edge met at the substep's end rather
+// than at its time, or a ball a pair pushed into the box) gives it g rise of potential energy
+// per unit mass that no force paid for: the ball pays it from its speed, v^2 -> v^2 - 2 g rise
+// as far as it has it, its direction kept, so that no push makes energy.
+inline void payForRise(Eigen::Vector3d& v, double rise, double g)
+{
+    const double v2 = v.squaredNorm();
+    if (!(rise > 0.0) || !(v2 > 0.0))
+        return;
+    v *= std::sqrt(std::max(0.0, 1.0 - 2.0 * g * rise / v2));
+}
+
 } // namespace ab::street

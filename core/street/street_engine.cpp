@@ -39,7 +39,9 @@ Engine::Engine(Layout layout, const Settings& settings)
     const auto n = static_cast<std::size_t>(settings.n);
     balls_.assign(n, Ball{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
     support_.assign(n, FaceRef{});
-    touched_.assign(n, 0);
+    id_.resize(n);
+    changed_.assign(n, 0);
+    moved_.assign(n, 0);
     workerImpacts_.assign(static_cast<std::size_t>(pool_->size()), 0);
     sizeColumns();
 }
@@ -54,6 +56,7 @@ void Engine::load(const State& s)
     double maxSpeed2 = 0.0;
     for (int i = 0; i < settings_.n; ++i) {
         Ball& b = balls_[static_cast<std::size_t>(i)];
+        id_[static_cast<std::size_t>(i)] = i;
         b.p = s.p.col(i);
         b.v = s.v.col(i);
         b.w = s.spin(i);
@@ -73,8 +76,9 @@ bool Engine::holds(const State& s) const
 {
     if (!loaded_ || s.size() != settings_.n || !s.spins())
         return false;
-    for (int i = 0; i < settings_.n; ++i) {
-        const Ball& b = balls_[static_cast<std::size_t>(i)];
+    for (int k = 0; k < settings_.n; ++k) {
+        const Ball& b = balls_[static_cast<std::size_t>(k)];
+        const int i = id_[static_cast<std::size_t>(k)];
         if (s.p.col(i) != b.p || s.v.col(i) != b.v || s.w.col(i) != b.w)
             return false;
     }
@@ -88,8 +92,9 @@ void Engine::store(State& s) const
     s.v.resize(3, n);
     s.w.resize(3, n);
     s.bounces.assign(static_cast<std::size_t>(n), 0);
-    for (int i = 0; i < n; ++i) {
-        const Ball& b = balls_[static_cast<std::size_t>(i)];
+    for (int k = 0; k < n; ++k) {
+        const Ball& b = balls_[static_cast<std::size_t>(k)];
+        const int i = id_[static_cast<std::size_t>(k)];
         s.p.col(i) = b.p;
         s.v.col(i) = b.v;
         s.w.col(i) = b.w;
@@ -111,6 +116,7 @@ void Engine::step()
     const int substeps = substepsFor(settings_.dt);
     const double h = settings_.dt / substeps;
     std::fill(workerImpacts_.begin(), workerImpacts_.end(), 0);
+    sortByColumn();
     for (int k = 0; k < substeps && !active_.empty(); ++k)
         substep(h);
     impacts_ = 0;
@@ -129,14 +135,22 @@ void Engine::contacts(double h)
     // listed pair overlaps by more than 1e-4 r and a pass turns none (a pair that an impulse
     // turned towards another is seen again). A pile keeps what the passes leave (at most a few
     // thousandths of r) for the next substep.
+    // Velocities below 1e-10 of the scene's speeds (the fastest ball, or sqrt(g r) for a pile
+    // at rest) are round-off: an approach slower than that turns nothing.
+    turnSpeed_ = 1e-10 * (maxSpeed_ + std::sqrt(settings_.g * settings_.radius));
+    if (pass_ > std::numeric_limits<std::uint32_t>::max() - 2u * kMaxPairPasses) {
+        pass_ = 0; // the numbers start again, every ball as changed long ago
+        std::fill(changed_.begin(), changed_.end(), 0u);
+    }
     PassResult pass{kInfinity, 1};
     for (int k = 0; k < kMaxPairPasses && (pass.overlap > 1e-4 * settings_.radius || pass.turned > 0); ++k) {
-        pass = resolvePairs(workerImpacts_[0], h);
-        for (int i : active_)
-            if (touched_[static_cast<std::size_t>(i)] != 0) {
-                touched_[static_cast<std::size_t>(i)] = 0;
-                settle(i, workerImpacts_[0]);
-            }
+        pass = resolvePairs(workerImpacts_[0], h, k == 0);
+        for (int i : movedList_) {
+            moved_[static_cast<std::size_t>(i)] = 0;
+            if (settle(i, workerImpacts_[0]))
+                markChanged(static_cast<std::uint32_t>(i));
+        }
+        movedList_.clear();
     }
     covered_ = h;
 }
@@ -162,6 +176,52 @@ void Engine::substep(double h)
     retire();
 }
 
+void Engine::sortByColumn()
+{
+    // The active balls by (column along x, column across z, slot): a stable order that
+    // depends on the positions and the last order only, whatever the threads.
+    sortKeys_.clear();
+    const double inv = 1.0 / columns_.side;
+    for (int k : active_) {
+        const Eigen::Vector3d& p = balls_[static_cast<std::size_t>(k)].p;
+        const auto cx =
+            static_cast<std::uint32_t>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
+        const auto cz =
+            static_cast<std::uint32_t>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
+        sortKeys_.push_back(SlotKey{cx * static_cast<std::uint32_t>(columns_.nz) + cz, k});
+    }
+    std::sort(sortKeys_.begin(), sortKeys_.end(), [](const SlotKey& a, const SlotKey& b) {
+        return a.column != b.column ? a.column < b.column : a.slot < b.slot;
+    });
+    // New slot j takes old slot newOrder_[j]: the active balls sorted, then the rest in order.
+    const std::size_t n = balls_.size();
+    newOrder_.clear();
+    moved_.assign(n, 0); // marks the active slots (all zero again below)
+    for (const SlotKey& key : sortKeys_) {
+        newOrder_.push_back(key.slot);
+        moved_[static_cast<std::size_t>(key.slot)] = 1;
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        if (moved_[k] == 0)
+            newOrder_.push_back(static_cast<int>(k));
+    std::fill(moved_.begin(), moved_.end(), 0);
+    ballScratch_.resize(n);
+    supportScratch_.resize(n);
+    idScratch_.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const auto k = static_cast<std::size_t>(newOrder_[j]);
+        ballScratch_[j] = balls_[k];
+        supportScratch_[j] = support_[k];
+        idScratch_[j] = id_[k];
+    }
+    balls_.swap(ballScratch_);
+    support_.swap(supportScratch_);
+    id_.swap(idScratch_);
+    for (std::size_t j = 0; j < active_.size(); ++j)
+        active_[j] = static_cast<int>(j);
+    std::fill(changed_.begin(), changed_.end(), 0u); // stamps belong to slots: the next pass visits every pair
+}
+
 void Engine::retire()
 {
     // Balls whose centres passed the open foot leave the run, at rest where they are.
@@ -181,9 +241,13 @@ std::size_t Engine::bytes() const
     std::size_t pairs = 0;
     for (const auto& list : pairs_)
         pairs += list.capacity() * sizeof(broadphase::Pair);
-    return balls_.capacity() * sizeof(Ball) + support_.capacity() * sizeof(FaceRef) + active_.capacity() * sizeof(int) +
+    return (balls_.capacity() + ballScratch_.capacity()) * sizeof(Ball) +
+           (support_.capacity() + supportScratch_.capacity()) * sizeof(FaceRef) +
+           (active_.capacity() + id_.capacity() + idScratch_.capacity() + newOrder_.capacity()) * sizeof(int) +
+           sortKeys_.capacity() * sizeof(SlotKey) +
            (bucket_.capacity() + next_.capacity() + columnHead_.capacity()) * sizeof(std::uint32_t) +
-           touched_.capacity() + pairs;
+           changed_.capacity() * sizeof(std::uint32_t) + moved_.capacity() + movedList_.capacity() * sizeof(int) +
+           pairs;
 }
 
 } // namespace ab::street

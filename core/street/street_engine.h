@@ -11,7 +11,7 @@
 //    time and the motion is split there (street_flight.cpp); edges and corners are met by
 //    closest point at the end of the flight. (b) Pairs of balls closer than 4 r (contact and a
 //    skin of 2 r) are found in a grid of columns over the street's plan and resolved in a fixed
-//    order, in passes until none overlaps by more than 1e-4 r (4 at most): impulse with
+//    order, in passes until none overlaps by more than 1e-4 r (8 at most): impulse with
 //    restitution e and Walton's tangential impulse while they approach, then
 //    the overlap parted, half each, and the street met again; pairs apart that will touch
 //    within the next substep collide at once (speculative contacts; street_pairs.cpp).
@@ -92,30 +92,51 @@ private:
     // The contact phase (street_pairs.cpp): pairs found, then the passes, looking ahead by h.
     void contacts(double h);
     void fly(int i, double h, long long& impacts);
-    void settle(int i, long long& impacts);
+    // Returns true when it moved the ball or changed its velocity.
+    bool settle(int i, long long& impacts);
     void findSupport(int i);
     void sizeColumns();
     std::uint32_t columnOf(const Eigen::Vector3d& p) const;
     void buildCells();
     void findPairs(int chunk);
     // One pass over the listed pairs, the speculative contacts of pairs apart that meet
-    // within h included: the largest overlap it parted, and how many pairs it turned.
+    // within h included: the largest overlap it parted, and how many pairs it turned. The
+    // first pass of a substep visits every pair; a later one only the pairs with a ball that
+    // changed since the pass before (street_pairs.cpp point 3).
     struct PassResult {
         double overlap = 0.0;
         int turned = 0;
     };
-    PassResult resolvePairs(long long& impacts, double h);
+    PassResult resolvePairs(long long& impacts, double h, bool first);
     bool collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const;
+    void markChanged(std::uint32_t i) { changed_[i] = pass_; }
+    // Parts two balls that overlap by `overlap` along n (a to b), half each (street_pairs.cpp).
+    void part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap);
     void retire();
     int substepsFor(double dt) const;
+    // Re-orders the balls' slots: the active ones by column (x first), then the others, so
+    // that the balls a pair search and a contact pass read together lie together in memory.
+    void sortByColumn();
 
     Layout layout_;
     Settings settings_;
     Surface surface_;
     std::unique_ptr<physical::WorkerPool> pool_;
+    // Per slot: the ball, the face it rests on, its index in a State (id_). Slots are
+    // re-ordered every step (sortByColumn); load and store translate.
     std::vector<Ball> balls_;
     std::vector<FaceRef> support_;
-    std::vector<int> active_; // the balls on the street, in index order
+    std::vector<int> id_;
+    std::vector<int> active_; // the slots of the balls on the street, in slot order
+    struct SlotKey {
+        std::uint32_t column;
+        int slot;
+    };
+    std::vector<SlotKey> sortKeys_;
+    std::vector<int> newOrder_;
+    std::vector<Ball> ballScratch_;
+    std::vector<FaceRef> supportScratch_;
+    std::vector<int> idScratch_;
     // The grid of columns over the street's plan (street_pairs.cpp): per active ball its
     // column and the next ball of its column's list; each column's first ball.
     struct Columns {
@@ -124,7 +145,13 @@ private:
     } columns_;
     std::vector<std::uint32_t> bucket_, next_, columnHead_;
     std::vector<std::vector<broadphase::Pair>> pairs_; // per chunk of active balls
-    std::vector<std::uint8_t> touched_;                // moved by a pair this substep
+    // Passes over the pairs are numbered through the run (pass_, the current one); each ball
+    // keeps the number of the last pass that changed it, and a pass lists the balls it moved.
+    std::vector<std::uint32_t> changed_;
+    std::vector<std::uint8_t> moved_; // moved by a pair in this pass
+    std::vector<int> movedList_;
+    std::uint32_t pass_ = 0;
+    double turnSpeed_ = 0.0; // an approach slower than this is round-off, not a turn
     std::vector<long long> workerImpacts_;
     long long impacts_ = 0;
     double maxSpeed_ = 0.0;

@@ -233,7 +233,7 @@ void Engine::fly(int i, double h, long long& impacts)
     settle(i, impacts);
 }
 
-void Engine::settle(int i, long long& impacts)
+bool Engine::settle(int i, long long& impacts)
 {
     // Edges and corners (point 2 of street_contact.h), and any overlap a pair left: the
     // centre is moved out along the normal from the closest point of each box it is within
@@ -241,6 +241,7 @@ void Engine::settle(int i, long long& impacts)
     Ball& b = balls_[static_cast<std::size_t>(i)];
     FaceRef& sup = support_[static_cast<std::size_t>(i)];
     const double r = settings_.radius;
+    bool changed = false;
     for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
         const Box& box = layout_.boxes[item];
         const Eigen::Vector3d local = box.toLocal(b.p);
@@ -270,13 +271,16 @@ void Engine::settle(int i, long long& impacts)
             }
         const Eigen::Vector3d n = box.rotateOut(away); // a unit vector turned into the world
         b.p += (r - dist) * n;
+        changed = true;
         bool approached = false;
         const bool onFace = faces == 1 && n.y() > 0.0;
         if (impactAlong(b.v, b.w, n, surface_, onFace, approached))
             ++impacts;
         else if (approached && onFace)
             sup = FaceRef{item, 2 * axis + (away[axis] > 0.0 ? 1 : 0)};
+        payForRise(b.v, (r - dist) * n.y(), settings_.g);
     }
+    return changed;
 }
 
 } // namespace ab::street

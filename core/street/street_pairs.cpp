@@ -10,10 +10,15 @@
 //    and +z in the same x), so every pair is found once, in an order that does not depend on
 //    the threads; a height test then the exact distance keep only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
-//    more than 1e-4 r (Gauss-Seidel; 4 passes at most): eqs 2.4-2.7 along the line of centres
-//    with restitution e, Walton's impulse between rough balls (pair_friction.h), the overlap
-//    parted half each; a ball moved then meets the street again (settle). Every pass also
-//    takes the pairs that will meet within the next substep (speculative contacts).
+//    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most): eqs 2.4-2.7 along
+//    the line of centres with restitution e, Walton's impulse between rough balls
+//    (pair_friction.h), the overlap parted half each; a ball moved then meets the street
+//    again (settle). Every pass also takes the pairs that will meet within the next substep
+//    (speculative contacts). Approaches slower than 1e-10 of the scene's speeds and overlaps
+//    below 1e-9 r are round-off and left alone, so a pair a pass resolved does nothing in the
+//    next unless a ball of it changed since: each pass after the first visits only the pairs
+//    with a ball changed by the pass before or by this one (a ball keeps the number of the
+//    last pass that changed it), and the rest of a pile costs nothing more.
 #include "street_engine.h"
 
 #include "../physical/pair_friction.h"
@@ -131,12 +136,20 @@ bool Engine::collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const
     return bounces;
 }
 
-Engine::PassResult Engine::resolvePairs(long long& impacts, double h)
+Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first)
 {
     const double contact = 2.0 * settings_.radius;
+    // Overlaps below 1e-9 r are the round-off of parting (centres some hundred metres out):
+    // left as they are, so that a pair once parted stays still.
+    const double partSlack = 1e-9 * settings_.radius;
+    const std::uint32_t before = pass_++; // balls this pass or the last one changed: >= before
     PassResult result;
     for (const auto& list : pairs_)
         for (const Pair& pair : list) {
+            // A pair whose balls are as they were when it was last visited (it did nothing then)
+            // would do nothing now.
+            if (!first && changed_[pair.a] < before && changed_[pair.b] < before)
+                continue;
             Ball& a = balls_[pair.a];
             Ball& b = balls_[pair.b];
             Eigen::Vector3d n = b.p - a.p;
@@ -158,25 +171,45 @@ Engine::PassResult Engine::resolvePairs(long long& impacts, double h)
                 if (!(t <= h))
                     continue;
                 const Eigen::Vector3d meet = (n + t * dv) / contact;
-                if (collide(a, b, meet, dv.dot(meet)))
+                const double u = dv.dot(meet);
+                if (!(u < -turnSpeed_))
+                    continue; // they graze
+                if (collide(a, b, meet, u))
                     ++impacts;
                 ++result.turned;
+                markChanged(pair.a);
+                markChanged(pair.b);
                 continue;
             }
             n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
             const double u = (b.v - a.v).dot(n); // negative while they approach
-            if (u < 0.0) {
+            if (u < -turnSpeed_) {
                 if (collide(a, b, n, u))
                     ++impacts;
                 ++result.turned;
+                markChanged(pair.a);
+                markChanged(pair.b);
             }
-            result.overlap = std::max(result.overlap, contact - d);
-            const double half = 0.5 * (contact - d);
-            a.p -= half * n;
-            b.p += half * n;
-            touched_[pair.a] = touched_[pair.b] = 1;
+            const double overlap = contact - d;
+            if (!(overlap > partSlack))
+                continue;
+            result.overlap = std::max(result.overlap, overlap);
+            part(pair.a, pair.b, n, overlap);
         }
     return result;
+}
+
+void Engine::part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap)
+{
+    // Half each along n: the pair's centre of mass (and its potential energy) kept.
+    for (const auto& [i, by] : {std::pair{a, -0.5 * overlap}, std::pair{b, 0.5 * overlap}}) {
+        balls_[i].p += by * n;
+        markChanged(i);
+        if (moved_[i] == 0) {
+            moved_[i] = 1;
+            movedList_.push_back(static_cast<int>(i));
+        }
+    }
 }
 
 } // namespace ab::street
