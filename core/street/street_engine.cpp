@@ -16,6 +16,11 @@ constexpr double kMaxTravel = 1.0; // of r per substep (point 1)
 constexpr int kMaxSubsteps = 4096;
 constexpr int kFlightChunk = 1024; // balls a worker flies at a time
 constexpr int kMaxPairPasses = 8;  // over the contacts of a substep
+// A pile several balls deep (the advert's hopper) still overlaps by some hundredths of r after
+// eight passes: passes go on while an overlap above 2e-3 r is left, up to 32, so that what
+// the next substep's flight adds stays below the health check's 1e-2 r.
+constexpr int kMaxPilePasses = 32;
+constexpr double kPileOverlap = 2e-3; // of r
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 } // namespace
@@ -133,17 +138,23 @@ void Engine::contacts(double h)
     // Gauss-Seidel passes over the same pairs, each seeing the last one's results: what one
     // contact pushes into another, or into the street (settle), the next pass parts, until no
     // listed pair overlaps by more than 1e-4 r and a pass turns none (a pair that an impulse
-    // turned towards another is seen again). A pile keeps what the passes leave (at most a few
-    // thousandths of r) for the next substep.
+    // turned towards another is seen again), eight passes at most, or up to 32 while more than
+    // 2e-3 r is left. A pile keeps what the passes leave for the next substep.
     // Velocities below 1e-10 of the scene's speeds (the fastest ball, or sqrt(g r) for a pile
     // at rest) are round-off: an approach slower than that turns nothing.
     turnSpeed_ = 1e-10 * (maxSpeed_ + std::sqrt(settings_.g * settings_.radius));
-    if (pass_ > std::numeric_limits<std::uint32_t>::max() - 2u * kMaxPairPasses) {
+    if (pass_ > std::numeric_limits<std::uint32_t>::max() - 2u * kMaxPilePasses) {
         pass_ = 0; // the numbers start again, every ball as changed long ago
         std::fill(changed_.begin(), changed_.end(), 0u);
     }
     PassResult pass{kInfinity, 1};
-    for (int k = 0; k < kMaxPairPasses && (pass.overlap > 1e-4 * settings_.radius || pass.turned > 0); ++k) {
+    const double r = settings_.radius;
+    const auto another = [&](int k) {
+        if (k < kMaxPairPasses && (pass.overlap > 1e-4 * r || pass.turned > 0))
+            return true;
+        return k < kMaxPilePasses && pass.overlap > kPileOverlap * r;
+    };
+    for (int k = 0; another(k); ++k) {
         pass = resolvePairs(workerImpacts_[0], h, k == 0);
         for (int i : movedList_) {
             moved_[static_cast<std::size_t>(i)] = 0;

@@ -11,7 +11,8 @@
 //    time and the motion is split there (street_flight.cpp); edges and corners are met by
 //    closest point at the end of the flight. (b) Pairs of balls closer than 4 r (contact and a
 //    skin of 2 r) are found in a grid of columns over the street's plan and resolved in a fixed
-//    order, in passes until none overlaps by more than 1e-4 r (8 at most): impulse with
+//    order, in passes until none overlaps by more than 1e-4 r (8 at most; up to 32 while a pile
+//    overlaps by more than 2e-3 r): impulse with
 //    restitution e and Walton's tangential impulse while they approach, then
 //    the overlap parted, half each, and the street met again; pairs apart that will touch
 //    within the next substep collide at once (speculative contacts; street_pairs.cpp).

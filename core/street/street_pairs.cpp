@@ -10,7 +10,8 @@
 //    and +z in the same x), so every pair is found once, in an order that does not depend on
 //    the threads; a height test then the exact distance keep only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
-//    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most): eqs 2.4-2.7 along
+//    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most, up to 32 while a
+//    deep pile overlaps by more than 2e-3 r): eqs 2.4-2.7 along
 //    the line of centres with restitution e, Walton's impulse between rough balls
 //    (pair_friction.h), the overlap parted half each; a ball moved then meets the street
 //    again (settle). Every pass also takes the pairs that will meet within the next substep
