@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace ab::street {
 
@@ -22,6 +23,15 @@ constexpr int kMaxPairPasses = 8;  // over the contacts of a substep
 constexpr int kMaxPilePasses = 32;
 constexpr double kPileOverlap = 2e-3; // of r
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// v[j] = v[order[j]] for every j (order a permutation of v's indices), through `scratch`.
+template <typename T> void reorder(std::vector<T>& v, const std::vector<int>& order, std::vector<T>& scratch)
+{
+    scratch.resize(v.size());
+    for (std::size_t j = 0; j < v.size(); ++j)
+        scratch[j] = v[static_cast<std::size_t>(order[j])];
+    v.swap(scratch);
+}
 
 } // namespace
 
@@ -192,44 +202,29 @@ void Engine::sortByColumn()
     // The active balls by (column along x, column across z, slot): a stable order that
     // depends on the positions and the last order only, whatever the threads.
     sortKeys_.clear();
-    const double inv = 1.0 / columns_.side;
     for (int k : active_) {
-        const Eigen::Vector3d& p = balls_[static_cast<std::size_t>(k)].p;
-        const auto cx =
-            static_cast<std::uint32_t>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
-        const auto cz =
-            static_cast<std::uint32_t>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
-        sortKeys_.push_back(SlotKey{cx * static_cast<std::uint32_t>(columns_.nz) + cz, k});
+        const Cell c = cellOf(balls_[static_cast<std::size_t>(k)].p);
+        sortKeys_.push_back(SlotKey{c.x * static_cast<std::uint32_t>(columns_.nz) + c.z, k});
     }
     std::sort(sortKeys_.begin(), sortKeys_.end(), [](const SlotKey& a, const SlotKey& b) {
         return a.column != b.column ? a.column < b.column : a.slot < b.slot;
     });
-    // New slot j takes old slot newOrder_[j]: the active balls sorted, then the rest in order.
-    const std::size_t n = balls_.size();
+    // New slot j takes old slot newOrder_[j]: the active balls sorted, then the rest in order
+    // (active_ lists its slots in increasing order, so the rest are the gaps between them).
+    const int n = settings_.n;
     newOrder_.clear();
-    moved_.assign(n, 0); // marks the active slots (all zero again below)
-    for (const SlotKey& key : sortKeys_) {
+    for (const SlotKey& key : sortKeys_)
         newOrder_.push_back(key.slot);
-        moved_[static_cast<std::size_t>(key.slot)] = 1;
+    for (int k = 0, next = 0; k < n; ++k) {
+        if (next < static_cast<int>(active_.size()) && active_[static_cast<std::size_t>(next)] == k)
+            ++next;
+        else
+            newOrder_.push_back(k);
     }
-    for (std::size_t k = 0; k < n; ++k)
-        if (moved_[k] == 0)
-            newOrder_.push_back(static_cast<int>(k));
-    std::fill(moved_.begin(), moved_.end(), 0);
-    ballScratch_.resize(n);
-    supportScratch_.resize(n);
-    idScratch_.resize(n);
-    for (std::size_t j = 0; j < n; ++j) {
-        const auto k = static_cast<std::size_t>(newOrder_[j]);
-        ballScratch_[j] = balls_[k];
-        supportScratch_[j] = support_[k];
-        idScratch_[j] = id_[k];
-    }
-    balls_.swap(ballScratch_);
-    support_.swap(supportScratch_);
-    id_.swap(idScratch_);
-    for (std::size_t j = 0; j < active_.size(); ++j)
-        active_[j] = static_cast<int>(j);
+    reorder(balls_, newOrder_, ballScratch_);
+    reorder(support_, newOrder_, supportScratch_);
+    reorder(id_, newOrder_, idScratch_);
+    std::iota(active_.begin(), active_.end(), 0);
     std::fill(changed_.begin(), changed_.end(), 0u); // stamps belong to slots: the next pass visits every pair
 }
 

@@ -97,6 +97,12 @@ private:
     bool settle(int i, long long& impacts);
     void findSupport(int i);
     void sizeColumns();
+    // The column of a centre (x along the street, z across), clamped into the grid, and its
+    // index in columnHead_.
+    struct Cell {
+        std::uint32_t x, z;
+    };
+    Cell cellOf(const Eigen::Vector3d& p) const;
     std::uint32_t columnOf(const Eigen::Vector3d& p) const;
     void buildCells();
     void findPairs(int chunk);

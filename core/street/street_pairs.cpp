@@ -58,13 +58,18 @@ void Engine::sizeColumns()
     columns_.nz = std::max(1, static_cast<int>(std::ceil(lengthZ / columns_.side)));
 }
 
-std::uint32_t Engine::columnOf(const Eigen::Vector3d& p) const
+Engine::Cell Engine::cellOf(const Eigen::Vector3d& p) const
 {
     const double inv = 1.0 / columns_.side;
     // max/min clamps NaN to the first column too
-    const auto cx = static_cast<int>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0));
-    const auto cz = static_cast<int>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0));
-    return static_cast<std::uint32_t>(cx + columns_.nx * cz);
+    return Cell{static_cast<std::uint32_t>(std::min(std::max(0.0, (p.x() - columns_.x0) * inv), columns_.nx - 1.0)),
+                static_cast<std::uint32_t>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0))};
+}
+
+std::uint32_t Engine::columnOf(const Eigen::Vector3d& p) const
+{
+    const Cell c = cellOf(p);
+    return c.x + static_cast<std::uint32_t>(columns_.nx) * c.z;
 }
 
 void Engine::buildCells()
@@ -145,6 +150,14 @@ Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first
     const double partSlack = 1e-9 * settings_.radius;
     const std::uint32_t before = pass_++; // balls this pass or the last one changed: >= before
     PassResult result;
+    // An approach turned along n: the impulse, counted, and both balls changed.
+    const auto turn = [&](const Pair& pair, const Eigen::Vector3d& n, double u) {
+        if (collide(balls_[pair.a], balls_[pair.b], n, u))
+            ++impacts;
+        ++result.turned;
+        markChanged(pair.a);
+        markChanged(pair.b);
+    };
     for (const auto& list : pairs_)
         for (const Pair& pair : list) {
             // A pair whose balls are as they were when it was last visited (it did nothing then)
@@ -173,24 +186,14 @@ Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first
                     continue;
                 const Eigen::Vector3d meet = (n + t * dv) / contact;
                 const double u = dv.dot(meet);
-                if (!(u < -turnSpeed_))
-                    continue; // they graze
-                if (collide(a, b, meet, u))
-                    ++impacts;
-                ++result.turned;
-                markChanged(pair.a);
-                markChanged(pair.b);
+                if (u < -turnSpeed_) // else they graze
+                    turn(pair, meet, u);
                 continue;
             }
             n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
             const double u = (b.v - a.v).dot(n); // negative while they approach
-            if (u < -turnSpeed_) {
-                if (collide(a, b, n, u))
-                    ++impacts;
-                ++result.turned;
-                markChanged(pair.a);
-                markChanged(pair.b);
-            }
+            if (u < -turnSpeed_)
+                turn(pair, n, u);
             const double overlap = contact - d;
             if (!(overlap > partSlack))
                 continue;
