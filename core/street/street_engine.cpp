@@ -54,6 +54,7 @@ Engine::Engine(Layout layout, const Settings& settings)
     const auto n = static_cast<std::size_t>(settings.n);
     balls_.assign(n, Ball{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
     support_.assign(n, FaceRef{});
+    room_.assign(n, Room{});
     id_.resize(n);
     changed_.assign(n, 0);
     moved_.assign(n, 0);
@@ -76,6 +77,7 @@ void Engine::load(const State& s)
         b.v = s.v.col(i);
         b.w = s.spin(i);
         support_[static_cast<std::size_t>(i)] = FaceRef{};
+        room_[static_cast<std::size_t>(i)] = Room{}; // not measured yet
         if (hasLeft(layout_, b.p.x()))
             continue;
         active_.push_back(i);
@@ -203,8 +205,7 @@ void Engine::sortByColumn()
     // depends on the positions and the last order only, whatever the threads.
     sortKeys_.clear();
     for (int k : active_) {
-        const Cell c = cellOf(balls_[static_cast<std::size_t>(k)].p);
-        sortKeys_.push_back(SlotKey{c.x * static_cast<std::uint32_t>(columns_.nz) + c.z, k});
+        sortKeys_.push_back(SlotKey{keyOf(balls_[static_cast<std::size_t>(k)].p), k});
     }
     std::sort(sortKeys_.begin(), sortKeys_.end(), [](const SlotKey& a, const SlotKey& b) {
         return a.column != b.column ? a.column < b.column : a.slot < b.slot;
@@ -223,6 +224,7 @@ void Engine::sortByColumn()
     }
     reorder(balls_, newOrder_, ballScratch_);
     reorder(support_, newOrder_, supportScratch_);
+    reorder(room_, newOrder_, roomScratch_);
     reorder(id_, newOrder_, idScratch_);
     std::iota(active_.begin(), active_.end(), 0);
     std::fill(changed_.begin(), changed_.end(), 0u); // stamps belong to slots: the next pass visits every pair
@@ -245,15 +247,18 @@ void Engine::retire()
 std::size_t Engine::bytes() const
 {
     std::size_t pairs = 0;
-    for (const auto& list : pairs_)
-        pairs += list.capacity() * sizeof(broadphase::Pair);
+    for (const auto& chunk : pairs_)
+        pairs += chunk.list.capacity() * sizeof(broadphase::Pair);
     return (balls_.capacity() + ballScratch_.capacity()) * sizeof(Ball) +
            (support_.capacity() + supportScratch_.capacity()) * sizeof(FaceRef) +
+           (room_.capacity() + roomScratch_.capacity()) * sizeof(Room) +
            (active_.capacity() + id_.capacity() + idScratch_.capacity() + newOrder_.capacity()) * sizeof(int) +
            sortKeys_.capacity() * sizeof(SlotKey) +
-           (bucket_.capacity() + next_.capacity() + columnHead_.capacity()) * sizeof(std::uint32_t) +
-           changed_.capacity() * sizeof(std::uint32_t) + moved_.capacity() + movedList_.capacity() * sizeof(int) +
-           pairs;
+           (cellKey_.capacity() + cellSlot_.capacity() + keyScratch_.capacity() + slotScratch_.capacity() +
+            histogram_.capacity()) *
+               sizeof(std::uint32_t) +
+           cellPos_.capacity() * sizeof(Eigen::Vector3d) + changed_.capacity() * sizeof(std::uint32_t) +
+           moved_.capacity() + movedList_.capacity() * sizeof(int) + pairs;
 }
 
 } // namespace ab::street

@@ -98,12 +98,12 @@ private:
     void findSupport(int i);
     void sizeColumns();
     // The column of a centre (x along the street, z across), clamped into the grid, and its
-    // index in columnHead_.
+    // key: x * 2^zBits + z, so that keys sort along x first.
     struct Cell {
         std::uint32_t x, z;
     };
     Cell cellOf(const Eigen::Vector3d& p) const;
-    std::uint32_t columnOf(const Eigen::Vector3d& p) const;
+    std::uint32_t keyOf(const Eigen::Vector3d& p) const;
     void buildCells();
     void findPairs(int chunk);
     // One pass over the listed pairs, the speculative contacts of pairs apart that meet
@@ -133,6 +133,14 @@ private:
     // re-ordered every step (sortByColumn); load and store translate.
     std::vector<Ball> balls_;
     std::vector<FaceRef> support_;
+    // How far a ball's centre may still move before a box of the street other than `nearest`
+    // (the nearest box when measured; -1: none) can come within r of it: a lower bound, less
+    // every move since it was measured (street_flight.cpp point 2).
+    struct Room {
+        double room = -1.0;
+        int nearest = -1;
+    };
+    std::vector<Room> room_;
     std::vector<int> id_;
     std::vector<int> active_; // the slots of the balls on the street, in slot order
     struct SlotKey {
@@ -143,15 +151,24 @@ private:
     std::vector<int> newOrder_;
     std::vector<Ball> ballScratch_;
     std::vector<FaceRef> supportScratch_;
+    std::vector<Room> roomScratch_;
     std::vector<int> idScratch_;
-    // The grid of columns over the street's plan (street_pairs.cpp): per active ball its
-    // column and the next ball of its column's list; each column's first ball.
+    // The grid of columns over the street's plan (street_pairs.cpp): the active balls sorted
+    // by their columns' keys each substep, with their slots and centres in that order.
     struct Columns {
         double x0 = 0.0, z0 = 0.0, side = 1.0;
         int nx = 1, nz = 1;
+        int zBits = 0; // 2^zBits >= nz
     } columns_;
-    std::vector<std::uint32_t> bucket_, next_, columnHead_;
-    std::vector<std::vector<broadphase::Pair>> pairs_; // per chunk of active balls
+    std::vector<std::uint32_t> cellKey_, cellSlot_, keyScratch_, slotScratch_, histogram_;
+    std::vector<Eigen::Vector3d> cellPos_;
+    // Per chunk of active balls: its pairs, the first `count` of `list` (the list keeps its
+    // size from substep to substep, so that filling it writes each entry once).
+    struct Chunk {
+        std::vector<broadphase::Pair> list;
+        std::size_t count = 0;
+    };
+    std::vector<Chunk> pairs_;
     // Passes over the pairs are numbered through the run (pass_, the current one); each ball
     // keeps the number of the last pass that changed it, and a pass lists the balls it moved.
     std::vector<std::uint32_t> changed_;

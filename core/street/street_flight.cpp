@@ -1,12 +1,25 @@
 // SPDX-License-Identifier: MIT
-// The flight phase of the street engine (street_engine.h point 2a): one ball's exact
-// motion through a substep, split at every event, and its contacts with the street's boxes
-// (street_contact.h). Each ball's numbers depend on that ball alone, so any thread may fly
-// any ball with the same result.
+// The flight phase of the street engine (street_engine.h point 2a).
+// 1. One ball's exact motion through a substep, split at every event, and its contacts with
+//    the street's boxes (street_contact.h). Each ball's numbers depend on that ball alone, so
+//    any thread may fly any ball with the same result.
+// 2. Room. Most balls roll or bounce in the middle of the road, far from every box but the
+//    one under them, yet each leg and each settle would look at every box near them. A ball
+//    keeps its room: the distance from its centre to the second nearest of those boxes, less
+//    r, measured whenever all of them are looked at, and made smaller by every move of the
+//    centre since (|p1 - p0| after a leg, half an overlap when a pair parts it). A box farther
+//    than r + the room cannot be touched before the centre has moved by the room (the
+//    triangle inequality), nor can a box the x bins leave out (farther than Layout::binPad).
+//    While a leg's farthest travel, |v| T + |a| T^2 / 2, stays below the room, only the
+//    nearest box is looked at for faces; while the room is positive, settle has nothing to do
+//    unless the nearest box is within r. Both skip only what the whole search would have
+//    skipped, so the motion is the same bit for bit.
+
 #include "street_engine.h"
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace ab::street {
 
@@ -17,6 +30,9 @@ constexpr int kMaxEvents = 32; // events a ball may meet in one substep; the res
 // and it moves off it no faster than this (m/s).
 constexpr double kRestGap = 1e-9;
 constexpr double kLeaveSpeed = 1e-9;
+// Taken off a measured room (relative to r): far above the round-off of a distance between
+// points some hundred metres from the origin (point 2).
+constexpr double kRoomSlack = 1e-9;
 
 // The event that ends a leg of the motion.
 enum class Event { None, Face, Leave, Roll };
@@ -60,17 +76,37 @@ Leg legMotion(const Layout& layout, const Surface& surface, double r, Eigen::Vec
     return leg;
 }
 
-// The earliest face the ball meets within end.tau (St5: the root of d0 + b t + q t^2 in each
-// box's frame, where the faces are coordinate planes), its centre then over the face.
-void nextFace(const Layout& layout, double r, const Eigen::Vector3d& p, const Eigen::Vector3d& v,
-              const Eigen::Vector3d& a, const FaceRef& sup, LegEnd& end)
+// The nearest of some boxes, and how far the next nearest is (point 2).
+struct Nearest {
+    int item = -1;
+    double first = kNever, second = kNever;
+    void add(int k, double distance)
+    {
+        if (distance < first) {
+            second = first;
+            first = distance;
+            item = k;
+        } else {
+            second = std::min(second, distance);
+        }
+    }
+};
+
+// The earliest face of the boxes `items` the ball meets within end.tau (St5: the root of
+// d0 + b t + q t^2 in each box's frame, where the faces are coordinate planes), its centre
+// then over the face. Returns the nearest of those boxes, by squared distance.
+Nearest nextFace(const Layout& layout, std::span<const std::uint16_t> items, double r, const Eigen::Vector3d& p,
+                 const Eigen::Vector3d& v, const Eigen::Vector3d& a, const FaceRef& sup, LegEnd& end)
 {
     const double T = end.tau;
     const double reach = r + T * v.norm() + 0.5 * T * T * a.norm(); // the farthest the ball gets in T
-    for (std::uint16_t item : layout.itemsNear(p.x())) {
+    Nearest nearest;
+    for (std::uint16_t item : items) {
         const Box& box = layout.boxes[item];
         const Eigen::Vector3d lp = box.toLocal(p);
-        if ((lp.cwiseAbs() - box.half).cwiseMax(0.0).squaredNorm() > reach * reach)
+        const double out2 = (lp.cwiseAbs() - box.half).cwiseMax(0.0).squaredNorm();
+        nearest.add(item, out2);
+        if (out2 > reach * reach)
             continue; // out of reach in this leg
         const Eigen::Vector3d lv = box.rotateIn(v), la = box.rotateIn(a);
         for (int face = 0; face < 6; ++face) {
@@ -88,6 +124,7 @@ void nextFace(const Layout& layout, double r, const Eigen::Vector3d& p, const Ei
                 end = LegEnd{when, Event::Face, FaceRef{item, face}};
         }
     }
+    return nearest;
 }
 
 // For a ball resting on a face: when its centre passes the face's edge (its box coordinate
@@ -211,13 +248,24 @@ void Engine::fly(int i, double h, long long& impacts)
 {
     Ball& b = balls_[static_cast<std::size_t>(i)];
     FaceRef& sup = support_[static_cast<std::size_t>(i)];
+    Room& room = room_[static_cast<std::size_t>(i)];
     const double r = settings_.radius;
     double t = 0.0;
     for (int step = 0; step < kMaxEvents && t < h; ++step) {
+        const Eigen::Vector3d from = b.p;
         const Leg leg = legMotion(layout_, surface_, r, b.p, b.v, b.w, sup);
         LegEnd end{h - t, Event::None, FaceRef{}};
         if (step < kMaxEvents - 1) { // the last leg flies the rest of the substep without events
-            nextFace(layout_, r, b.p, b.v, leg.a, sup, end);
+            const double T = end.tau;
+            if (room.room > T * b.v.norm() + 0.5 * T * T * leg.a.norm()) {
+                if (room.nearest >= 0) { // every other box beyond reach (point 2)
+                    const auto own = static_cast<std::uint16_t>(room.nearest);
+                    nextFace(layout_, std::span(&own, 1), r, b.p, b.v, leg.a, sup, end);
+                }
+            } else {
+                const Nearest near = nextFace(layout_, layout_.itemsNear(b.p.x()), r, b.p, b.v, leg.a, sup, end);
+                room = Room{std::min(std::sqrt(near.second), layout_.binPad()) - (1.0 + kRoomSlack) * r, near.item};
+            }
             if (sup.valid())
                 nextOnFace(layout_, b.p, b.v, leg, sup, end);
         }
@@ -229,6 +277,7 @@ void Engine::fly(int i, double h, long long& impacts)
             b.w = leg.rest.rolling ? rollingSpin(b.v, b.w, leg.n, r) : Eigen::Vector3d(b.w + tau * leg.rest.alpha);
         t = end.event == Event::None ? h : t + tau;
         endLeg(layout_, surface_, r, b.p, b.v, b.w, sup, leg, end, impacts);
+        room.room -= (b.p - from).norm();
     }
     settle(i, impacts);
 }
@@ -240,17 +289,35 @@ bool Engine::settle(int i, long long& impacts)
     // r of, and a ball moving in along that normal meets it.
     Ball& b = balls_[static_cast<std::size_t>(i)];
     FaceRef& sup = support_[static_cast<std::size_t>(i)];
+    Room& room = room_[static_cast<std::size_t>(i)];
     const double r = settings_.radius;
+    const auto rests = [&] { // on its support's face
+        return std::abs(faceGap(layout_.boxes[static_cast<std::size_t>(sup.item)], sup.face, b.p, r)) <=
+               kRestGap * r + 1e-12;
+    };
+    // What the loop below does with one box: nothing when the ball rests on it, or when the
+    // centre is r or more from it.
+    const auto clearOf = [&](int item) {
+        if (sup.item == item && rests())
+            return true;
+        const Box& box = layout_.boxes[static_cast<std::size_t>(item)];
+        const Eigen::Vector3d local = box.toLocal(b.p);
+        return !((local - local.cwiseMax(-box.half).cwiseMin(box.half)).norm() < r * (1.0 - 1e-12));
+    };
+    if (room.room > 0.0 && (room.nearest < 0 || clearOf(room.nearest)))
+        return false; // no box within r (point 2)
     bool changed = false;
+    Nearest near;
     for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
         const Box& box = layout_.boxes[item];
         const Eigen::Vector3d local = box.toLocal(b.p);
         const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
         Eigen::Vector3d away = local - closest;
         double dist = away.norm();
+        near.add(item, dist);
         if (!(dist < r * (1.0 - 1e-12)))
             continue;
-        if (sup.valid() && sup.item == item && std::abs(faceGap(box, sup.face, b.p, r)) <= kRestGap * r + 1e-12)
+        if (sup.valid() && sup.item == item && rests())
             continue; // resting on this box's face
         int axis = -1;
         if (dist > 0.0) {
@@ -280,6 +347,8 @@ bool Engine::settle(int i, long long& impacts)
             sup = FaceRef{item, 2 * axis + (away[axis] > 0.0 ? 1 : 0)};
         payForRise(b.v, (r - dist) * n.y(), settings_.g);
     }
+    // A push brought a box within r: no room until the next whole search.
+    room = changed ? Room{} : Room{std::min(near.second, layout_.binPad()) - (1.0 + kRoomSlack) * r, near.item};
     return changed;
 }
 

@@ -43,7 +43,9 @@ Layout::Layout(double slopeRadians, int blocks_, double blockLength_, double cro
     // A ball reaches r beyond its centre and moves about r in a substep (street_engine.cpp;
     // an impulse between two balls can raise a speed by up to sqrt 2): items within 4 r of its
     // x are every item it can touch.
-    bin(4.0 * radius);
+    // Half a metre (or 4 r, if more): a ball away from every listed box has that much room
+    // before a box left out of its list can matter (street_flight.cpp point 2).
+    bin(std::max(4.0 * radius, 0.5));
 }
 
 namespace {
@@ -166,6 +168,7 @@ void Layout::build(int carCount, int balls)
 
 void Layout::bin(double pad)
 {
+    binPad_ = pad;
     binLo_ = xTop - kHouseDepth - pad;
     binWidth_ = kBinWidth;
     const auto bins = static_cast<std::size_t>(std::ceil((xFoot + pad - binLo_) / binWidth_)) + 1;

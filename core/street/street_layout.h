@@ -91,6 +91,8 @@ struct Layout {
     // The items a ball whose centre has this x may touch within one substep: every box whose
     // x extent, grown by a few radii, holds x (binned once, at construction).
     std::span<const std::uint16_t> itemsNear(double x) const;
+    // Every box that itemsNear(x) leaves out is farther than this from the centre (m).
+    double binPad() const { return binPad_; }
     // Largest number of parked cars these blocks hold (two sides, one car a slot).
     static int carSlots(int blocks, double blockLength);
 
@@ -100,7 +102,7 @@ private:
     void addSegment(ItemKind kind, int segment, double x0, double y0, double length, double angle);
     void bin(double pad);
 
-    double binLo_ = 0.0, binWidth_ = 1.0;
+    double binLo_ = 0.0, binWidth_ = 1.0, binPad_ = 0.0;
     std::vector<std::uint32_t> binStart_;
     std::vector<std::uint16_t> binItems_;
 };

@@ -3,12 +3,16 @@
 // 1. The balls roll and bounce in a thin layer over a long, narrow street, so the grid is one
 //    of columns: cells over (x, z) at least 4 r wide (contact 2 r and a skin of 2 r), the
 //    street's whole length and width, every height in one column. A centre beyond the grid
-//    falls in its outermost column (clamping never separates two coordinates). Each column
-//    keeps a linked list of its balls, latest first: O(N) a substep, however many columns.
-// 2. Two centres closer than 4 r lie in the same or adjacent columns. Each ball looks for
-//    later balls of its own column and for all the balls of the four columns after it (+x,
-//    and +z in the same x), so every pair is found once, in an order that does not depend on
-//    the threads; a height test then the exact distance keep only the near ones.
+//    falls in its outermost column (clamping never separates two coordinates). Each substep
+//    the active balls are sorted by their columns' keys, x * 2^zBits + z (two stable counting
+//    sorts, by z then by x: O(N + columns along x + columns across)), and their slots and
+//    centres copied out in that order, so a column is a run of that array and two columns
+//    side by side across the street are one run.
+// 2. Two centres closer than 4 r lie in the same or adjacent columns. Each ball looks at the
+//    later balls of its own column and the column at z + 1 (one run from the ball on), and
+//    at the columns z - 1, z, z + 1 of the next x (one run, found by a pointer that only moves
+//    forward as the balls go by), so every pair is found once, in an order that does not
+//    depend on the threads; the exact distance then keeps only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
 //    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most, up to 32 while a
 //    deep pile overlaps by more than 2e-3 r): eqs 2.4-2.7 along
@@ -27,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace ab::street {
 
@@ -39,7 +44,6 @@ constexpr int kPairChunk = 2048; // active balls a worker searches at a time
 // did not touch after the flight still finds that pair in the list, and so does a pair that
 // will touch within the next substep (two balls close by at most 2 r in one).
 constexpr double kSkin = 2.0;
-constexpr std::uint32_t kEnd = 0xffffffffu; // the end of a column's list
 
 } // namespace
 
@@ -47,7 +51,8 @@ void Engine::sizeColumns()
 {
     // Over the street's plan from the back wall to beyond the foot, in cells of at least the
     // pair distance and at most about max(8 N, 2^20) cells in all (cells grow beyond that
-    // distance to respect it).
+    // distance to respect it), so that the counting sorts' histograms stay small beside N and
+    // a key, x * 2^zBits + z < 2 nx nz, fits in 32 bits.
     const double reach = (2.0 + kSkin) * settings_.radius;
     columns_.x0 = layout_.xTop - 4.0;
     columns_.z0 = -(0.5 * layout_.width + layout_.sidewalk);
@@ -56,6 +61,9 @@ void Engine::sizeColumns()
     columns_.side = std::max(reach * (1.0 + 1e-9), std::sqrt(lengthX * lengthZ / cells));
     columns_.nx = std::max(1, static_cast<int>(std::ceil(lengthX / columns_.side)));
     columns_.nz = std::max(1, static_cast<int>(std::ceil(lengthZ / columns_.side)));
+    columns_.zBits = 0;
+    while ((1 << columns_.zBits) < columns_.nz)
+        ++columns_.zBits;
 }
 
 Engine::Cell Engine::cellOf(const Eigen::Vector3d& p) const
@@ -66,61 +74,112 @@ Engine::Cell Engine::cellOf(const Eigen::Vector3d& p) const
                 static_cast<std::uint32_t>(std::min(std::max(0.0, (p.z() - columns_.z0) * inv), columns_.nz - 1.0))};
 }
 
-std::uint32_t Engine::columnOf(const Eigen::Vector3d& p) const
+std::uint32_t Engine::keyOf(const Eigen::Vector3d& p) const
 {
     const Cell c = cellOf(p);
-    return c.x + static_cast<std::uint32_t>(columns_.nx) * c.z;
+    return (c.x << columns_.zBits) | c.z;
 }
+
+namespace {
+
+// A stable counting sort of (key, slot) by digit(key) < buckets, from `key`/`slot` into
+// `keyOut`/`slotOut`.
+template <typename Digit>
+void sortByDigit(const std::vector<std::uint32_t>& key, const std::vector<std::uint32_t>& slot,
+                 std::vector<std::uint32_t>& keyOut, std::vector<std::uint32_t>& slotOut,
+                 std::vector<std::uint32_t>& histogram, std::size_t buckets, Digit digit)
+{
+    histogram.assign(buckets + 1, 0);
+    for (std::uint32_t k : key)
+        ++histogram[digit(k) + 1];
+    for (std::size_t b = 1; b <= buckets; ++b)
+        histogram[b] += histogram[b - 1]; // where each digit's run starts
+    for (std::size_t i = 0; i < key.size(); ++i) {
+        const std::uint32_t at = histogram[digit(key[i])]++;
+        keyOut[at] = key[i];
+        slotOut[at] = slot[i];
+    }
+}
+
+} // namespace
 
 void Engine::buildCells()
 {
-    // Linked lists per column (head, then next): O(N) a substep, whatever the number of
-    // columns; the columns used last time are emptied first.
+    // Point 1: keys in active order, sorted by z then (stably) by x; then the centres in order.
     const std::size_t count = active_.size();
-    if (columnHead_.empty())
-        columnHead_.assign(static_cast<std::size_t>(columns_.nx) * static_cast<std::size_t>(columns_.nz), kEnd);
-    for (std::uint32_t c : bucket_)
-        columnHead_[c] = kEnd;
-    bucket_.resize(count);
-    next_.resize(count);
+    for (auto* v : {&cellKey_, &cellSlot_, &keyScratch_, &slotScratch_})
+        v->resize(count);
+    cellPos_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t c = columnOf(balls_[static_cast<std::size_t>(active_[k])].p);
-        bucket_[k] = c;
-        next_[k] = columnHead_[c]; // each list runs from the latest ball to the earliest
-        columnHead_[c] = static_cast<std::uint32_t>(k);
+        const auto slot = static_cast<std::uint32_t>(active_[k]);
+        cellKey_[k] = keyOf(balls_[slot].p);
+        cellSlot_[k] = slot;
     }
+    const std::uint32_t zMask = (1u << columns_.zBits) - 1u;
+    const int zBits = columns_.zBits;
+    sortByDigit(cellKey_, cellSlot_, keyScratch_, slotScratch_, histogram_, static_cast<std::size_t>(columns_.nz),
+                [zMask](std::uint32_t key) { return key & zMask; });
+    sortByDigit(keyScratch_, slotScratch_, cellKey_, cellSlot_, histogram_, static_cast<std::size_t>(columns_.nx),
+                [zBits](std::uint32_t key) { return key >> zBits; });
+    for (std::size_t s = 0; s < count; ++s)
+        cellPos_[s] = balls_[cellSlot_[s]].p;
     pairs_.resize((count + kPairChunk - 1) / kPairChunk);
 }
 
 void Engine::findPairs(int chunk)
 {
-    auto& out = pairs_[static_cast<std::size_t>(chunk)];
-    out.clear();
+    std::vector<Pair>& out = pairs_[static_cast<std::size_t>(chunk)].list;
     const double reach = (2.0 + kSkin) * settings_.radius, reach2 = reach * reach;
+    const std::size_t count = cellKey_.size();
     const std::size_t begin = static_cast<std::size_t>(chunk) * kPairChunk;
-    const std::size_t end = std::min(active_.size(), begin + kPairChunk);
-    // The own column (later balls only), then +x with z - 1, z, z + 1, and z + 1 in the same x.
-    constexpr int kAfter[4][2] = {{1, -1}, {1, 0}, {1, 1}, {0, 1}};
-    const auto test = [&](std::size_t k, const Eigen::Vector3d& p, std::uint32_t other) {
-        const Eigen::Vector3d& q = balls_[static_cast<std::size_t>(active_[other])].p;
-        const double dy = q.y() - p.y();
-        if (dy * dy < reach2 && (q - p).squaredNorm() < reach2)
-            out.push_back(Pair{static_cast<std::uint32_t>(active_[k]), static_cast<std::uint32_t>(active_[other])});
-    };
-    for (std::size_t k = begin; k < end; ++k) {
-        const Eigen::Vector3d& p = balls_[static_cast<std::size_t>(active_[k])].p;
-        for (std::uint32_t o = columnHead_[bucket_[k]]; o != kEnd && o > k; o = next_[o])
-            test(k, p, o); // the later balls of its own column come first in its list
-        const auto nx = static_cast<std::uint32_t>(columns_.nx);
-        const auto cx = static_cast<int>(bucket_[k] % nx), cz = static_cast<int>(bucket_[k] / nx);
-        for (const auto& d : kAfter) {
-            const int x = cx + d[0], z = cz + d[1];
-            if (x < 0 || x >= columns_.nx || z < 0 || z >= columns_.nz)
-                continue;
-            for (std::uint32_t o = columnHead_[static_cast<std::size_t>(x + columns_.nx * z)]; o != kEnd; o = next_[o])
-                test(k, p, o);
-        }
+    const std::size_t end = std::min(count, begin + kPairChunk);
+    if (begin >= end) {
+        pairs_[static_cast<std::size_t>(chunk)].count = 0;
+        return;
     }
+    const std::uint32_t* key = cellKey_.data();
+    const int zBits = columns_.zBits;
+    const auto nz = static_cast<std::uint32_t>(columns_.nz), nx = static_cast<std::uint32_t>(columns_.nx);
+    // Each ball's candidates [from, to) are written whether near or not and only the near ones
+    // kept (no branch on the distance, which goes either way).
+    std::size_t listed = 0;
+    const auto near = [&](std::size_t s, std::size_t from, std::size_t to) {
+        if (listed + (to - from) > out.size())
+            out.resize(2 * (listed + (to - from)));
+        const Eigen::Vector3d p = cellPos_[s];
+        for (std::size_t t = from; t < to; ++t) {
+            out[listed] = Pair{cellSlot_[s], cellSlot_[t]};
+            listed += (cellPos_[t] - p).squaredNorm() < reach2 ? 1 : 0;
+        }
+    };
+    // The window of the next x for a key: its columns z - 1 .. z + 1 (within the grid).
+    const auto window = [&](std::uint32_t k, std::uint32_t& low, std::uint32_t& high) {
+        const std::uint32_t cz = k & ((1u << zBits) - 1u), row = ((k >> zBits) + 1u) << zBits;
+        low = row | (cz > 0 ? cz - 1 : 0);
+        high = row | std::min(cz + 1, nz - 1);
+    };
+    std::uint32_t low = 0, high = 0;
+    window(key[begin], low, high);
+    std::size_t ahead = static_cast<std::size_t>(std::lower_bound(key + begin, key + count, low) - key);
+    for (std::size_t s = begin; s < end; ++s) {
+        const std::uint32_t k = key[s];
+        const std::uint32_t cz = k & ((1u << zBits) - 1u);
+        const std::uint32_t last = cz + 1 < nz ? k + 1 : k; // its own column and the one at z + 1
+        std::size_t to = s + 1;
+        while (to < count && key[to] <= last)
+            ++to;
+        near(s, s + 1, to);
+        if ((k >> zBits) + 1 >= nx)
+            continue; // no columns beyond the last x
+        window(k, low, high);
+        while (ahead < count && key[ahead] < low)
+            ++ahead; // low never decreases as the keys grow
+        to = ahead;
+        while (to < count && key[to] <= high)
+            ++to;
+        near(s, ahead, to);
+    }
+    pairs_[static_cast<std::size_t>(chunk)].count = listed;
 }
 
 // Eqs 2.4-2.7 for equal masses along n (a to b), u = (v_b - v_a).n < 0: u becomes -e u through
@@ -158,8 +217,8 @@ Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first
         markChanged(pair.a);
         markChanged(pair.b);
     };
-    for (const auto& list : pairs_)
-        for (const Pair& pair : list) {
+    for (const Chunk& chunk : pairs_)
+        for (const Pair& pair : std::span(chunk.list.data(), chunk.count)) {
             // A pair whose balls are as they were when it was last visited (it did nothing then)
             // would do nothing now.
             if (!first && changed_[pair.a] < before && changed_[pair.b] < before)
@@ -208,6 +267,7 @@ void Engine::part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, do
     // Half each along n: the pair's centre of mass (and its potential energy) kept.
     for (const auto& [i, by] : {std::pair{a, -0.5 * overlap}, std::pair{b, 0.5 * overlap}}) {
         balls_[i].p += by * n;
+        room_[i].room -= std::abs(by); // n is a unit vector
         markChanged(i);
         if (moved_[i] == 0) {
             moved_[i] = 1;
