@@ -41,6 +41,10 @@ std::string remedyText(const Finding& f)
         return "use --impacts located or a smaller --dt";
     case Remedy::SmallerDt:
         return "use a smaller --dt";
+    case Remedy::StreetContacts:
+        return "the street's substeps follow its fastest ball, so a smaller --dt does not shorten them; this is "
+               "what its contact passes left where balls press on each other, most in a pile several balls deep: "
+               "fewer balls (a smaller n) pile less deep";
     }
     return {};
 }

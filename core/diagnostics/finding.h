@@ -55,6 +55,7 @@ enum class Remedy {
     EulerAddsEnergy,   // explicit Euler adds energy every step: another integrator
     LocatedOrSmallerDt,
     SmallerDt,
+    StreetContacts, // the street: substeps follow the fastest ball, not dt; piles leave the most
 };
 
 struct Finding {

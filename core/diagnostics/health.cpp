@@ -124,6 +124,8 @@ std::string HealthCheck::Impl::impactAdvice(Finding& f) const
         return advise(f, Remedy::ReportOnePerFrame);
     if (report)
         return advise(f, Remedy::ReportStepEnd);
+    if (spec.scene == SceneId::Street)
+        return advise(f, Remedy::StreetContacts);
     if (spec.impacts == ImpactMode::StepEnd)
         return advise(f, Remedy::LocatedOrSmallerDt);
     return advise(f, Remedy::SmallerDt);

@@ -147,6 +147,10 @@
         <translation>Välj ett mindre steg.</translation>
     </message>
     <message>
+        <source>The street&apos;s substeps follow its fastest ball, so a smaller step does not shorten them; this is what its contact passes left where balls press on each other, most in a pile several balls deep: fewer balls pile less deep.</source>
+        <translation>Gatans delsteg följer dess snabbaste boll, så ett mindre steg gör dem inte kortare; detta är vad dess kontaktpass lämnade där bollar trycker mot varandra, mest i en hög flera bollar djup: färre bollar ger en lägre hög.</translation>
+    </message>
+    <message>
         <source>The report&apos;s bounce limit stopped the ball at t = %1: after more than %2 bounces its position and velocity are set to zero (Appendix A)</source>
         <translation>Rapportens studsgräns stoppade bollen vid t = %1: efter fler än %2 studsar sätts dess position och hastighet till noll (bilaga A)</translation>
     </message>

@@ -279,6 +279,36 @@ private slots:
         QCOMPARE(c.pastFoot.front(), 1);
     }
 
+    void anOverlapOnTheStreetIsPutDownToItsContactsNotToTheStep()
+    {
+        // The street's substeps follow its fastest ball, whatever --dt: the advice for two balls
+        // found inside each other names the contact passes and the pile's depth instead.
+        RunSpec spec = streetSpec({"n=2"});
+        const ab::street::Layout layout = ab::street::Layout::fromParams(spec.params);
+        const double r = 0.03, y = layout.roadY(20.0) + r;
+        State before;
+        before.resize(2);
+        before.w.setZero(3, 2);
+        before.p.col(0) = Vector3d(20.0, y, 0.0);
+        before.p.col(1) = Vector3d(20.0, y, 2.0 * r); // touching, side by side across the road
+        State after = before;
+        after.t = 1.0 / 60.0;
+        after.p(2, 1) -= 0.2 * r; // now a fifth of r inside each other
+        auto sim = ab::makeSimulation(spec);
+        ab::diagnostics::HealthCheck health(*sim, before);
+        health.check(before, after);
+        bool found = false;
+        for (const ab::diagnostics::HealthStatus& s : health.issues()) {
+            if (s.finding.kind != ab::diagnostics::FindingKind::Overlap)
+                continue;
+            found = true;
+            QCOMPARE(s.finding.remedy, ab::diagnostics::Remedy::StreetContacts);
+            QVERIFY2(s.advice.find("contact passes") != std::string::npos, s.advice.c_str());
+            QVERIFY2(s.advice.find("use a smaller --dt") == std::string::npos, s.advice.c_str());
+        }
+        QVERIFY(found);
+    }
+
     void manyBallsLeavingAtTheFootStayHealthy()
     {
         // The balls that left rest where they left, out of the run: the health check does not

@@ -157,6 +157,10 @@ QString HealthText::remedy(const diagnostics::Finding& f, const SceneInfo& scene
         return tr("Choose impacts located inside the step, or a smaller step.");
     case Remedy::SmallerDt:
         return tr("Choose a smaller step.");
+    case Remedy::StreetContacts:
+        return tr("The street's substeps follow its fastest ball, so a smaller step does not shorten them; this is "
+                  "what its contact passes left where balls press on each other, most in a pile several balls "
+                  "deep: fewer balls pile less deep.");
     }
     return {};
 }
