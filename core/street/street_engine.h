@@ -95,6 +95,10 @@ private:
     void fly(int i, double h, long long& impacts);
     // Returns true when it moved the ball or changed its velocity.
     bool settle(int i, long long& impacts);
+    // Moves a centre `dist` from box `item` (box coordinates `local`, `away` from its closest
+    // point) out to r along the normal there, and meets the box (street_contact.h point 2).
+    void pushOut(Ball& b, FaceRef& sup, int item, const Eigen::Vector3d& local, Eigen::Vector3d away, double dist,
+                 long long& impacts) const;
     void findSupport(int i);
     void sizeColumns();
     // The column of a centre (x along the street, z across), clamped into the grid, and its

@@ -282,6 +282,39 @@ void Engine::fly(int i, double h, long long& impacts)
     settle(i, impacts);
 }
 
+void Engine::pushOut(Ball& b, FaceRef& sup, int item, const Eigen::Vector3d& local, Eigen::Vector3d away, double dist,
+                     long long& impacts) const
+{
+    const Box& box = layout_.boxes[static_cast<std::size_t>(item)];
+    const double r = settings_.radius;
+    int axis = -1;
+    if (dist > 0.0) {
+        away /= dist;
+    } else {
+        // The centre inside the box: out through the nearest face.
+        const Eigen::Vector3d depth = box.half - local.cwiseAbs();
+        depth.minCoeff(&axis);
+        away = Eigen::Vector3d::Zero();
+        away[axis] = local[axis] >= 0.0 ? 1.0 : -1.0;
+        dist = -depth[axis];
+    }
+    int faces = 0;
+    for (int k = 0; k < 3; ++k)
+        if (away[k] != 0.0) {
+            ++faces;
+            axis = k;
+        }
+    const Eigen::Vector3d n = box.rotateOut(away); // a unit vector turned into the world
+    b.p += (r - dist) * n;
+    bool approached = false;
+    const bool onFace = faces == 1 && n.y() > 0.0;
+    if (impactAlong(b.v, b.w, n, surface_, onFace, approached))
+        ++impacts;
+    else if (approached && onFace)
+        sup = FaceRef{item, 2 * axis + (away[axis] > 0.0 ? 1 : 0)};
+    payForRise(b.v, (r - dist) * n.y(), settings_.g);
+}
+
 bool Engine::settle(int i, long long& impacts)
 {
     // Edges and corners (point 2 of street_contact.h), and any overlap a pair left: the
@@ -319,33 +352,8 @@ bool Engine::settle(int i, long long& impacts)
             continue;
         if (sup.valid() && sup.item == item && rests())
             continue; // resting on this box's face
-        int axis = -1;
-        if (dist > 0.0) {
-            away /= dist;
-        } else {
-            // The centre inside the box: out through the nearest face.
-            const Eigen::Vector3d depth = box.half - local.cwiseAbs();
-            depth.minCoeff(&axis);
-            away = Eigen::Vector3d::Zero();
-            away[axis] = local[axis] >= 0.0 ? 1.0 : -1.0;
-            dist = -depth[axis];
-        }
-        int faces = 0;
-        for (int k = 0; k < 3; ++k)
-            if (away[k] != 0.0) {
-                ++faces;
-                axis = k;
-            }
-        const Eigen::Vector3d n = box.rotateOut(away); // a unit vector turned into the world
-        b.p += (r - dist) * n;
+        pushOut(b, sup, item, local, away, dist, impacts);
         changed = true;
-        bool approached = false;
-        const bool onFace = faces == 1 && n.y() > 0.0;
-        if (impactAlong(b.v, b.w, n, surface_, onFace, approached))
-            ++impacts;
-        else if (approached && onFace)
-            sup = FaceRef{item, 2 * axis + (away[axis] > 0.0 ? 1 : 0)};
-        payForRise(b.v, (r - dist) * n.y(), settings_.g);
     }
     // A push brought a box within r: no room until the next whole search.
     room = changed ? Room{} : Room{std::min(near.second, layout_.binPad()) - (1.0 + kRoomSlack) * r, near.item};
