@@ -197,6 +197,21 @@ private slots:
         QCOMPARE(w.runOptions()->errorText(), QString());
     }
 
+    void emptyStepFieldHintsTheModelsStepInSixDigits()
+    {
+        // The hint of an empty step field is read, not typed back: 1/60 s shows as 0.0166667,
+        // not as the seventeen digits that read back to the same double.
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Street);
+        QLineEdit* dt = w.findChild<QLineEdit*>("dtField");
+        QCOMPARE(dt->text(), QString());
+        QVERIFY2(dt->placeholderText().startsWith("0.0166667 "), qPrintable(dt->placeholderText()));
+        w.showScene(SceneId::Bounce1d);
+        QVERIFY2(!dt->placeholderText().contains("000000") && !dt->placeholderText().contains("999999"),
+                 qPrintable(dt->placeholderText()));
+    }
+
     void modelAndIntegratorListsComeFromTheCore()
     {
         MainWindow w;

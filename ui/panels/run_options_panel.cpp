@@ -284,7 +284,9 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     if (!reportOnly.isEmpty())
         why += "\n" + tr("The physical model ignores the report-only constants (%1).").arg(reportOnly.join(", "));
     compare_->setToolTip(why);
-    dt_->setPlaceholderText(tr("%1 (the model's step)").arg(qs(formatNumber(defaultDt(scene.id, options.model)))));
+    // Six digits: the hint reads 0.0166667 for 1/60 s rather than all seventeen that read back.
+    dt_->setPlaceholderText(
+        tr("%1 (the model's step)").arg(qs(formatSignificant(defaultDt(scene.id, options.model), 6))));
     if (!refused_.count(dt_)) // a refused entry stays as typed, in red
         dt_->setText(options.dt ? qs(formatNumber(*options.dt)) : QString());
     dtUnit_->setText(coreText(scene.timeUnit));
