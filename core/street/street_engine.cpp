@@ -203,19 +203,13 @@ void Engine::sortByColumn()
 {
     // The active balls by (column along x, column across z, slot): a stable order that
     // depends on the positions and the last order only, whatever the threads.
-    sortKeys_.clear();
-    for (int k : active_) {
-        sortKeys_.push_back(SlotKey{keyOf(balls_[static_cast<std::size_t>(k)].p), k});
-    }
-    std::sort(sortKeys_.begin(), sortKeys_.end(), [](const SlotKey& a, const SlotKey& b) {
-        return a.column != b.column ? a.column < b.column : a.slot < b.slot;
-    });
+    sortActiveByColumn(); // the substeps' sort (street_pairs.cpp point 1)
     // New slot j takes old slot newOrder_[j]: the active balls sorted, then the rest in order
     // (active_ lists its slots in increasing order, so the rest are the gaps between them).
     const int n = settings_.n;
     newOrder_.clear();
-    for (const SlotKey& key : sortKeys_)
-        newOrder_.push_back(key.slot);
+    for (std::uint32_t slot : cellSlot_)
+        newOrder_.push_back(static_cast<int>(slot));
     for (int k = 0, next = 0; k < n; ++k) {
         if (next < static_cast<int>(active_.size()) && active_[static_cast<std::size_t>(next)] == k)
             ++next;
@@ -253,7 +247,6 @@ std::size_t Engine::bytes() const
            (support_.capacity() + supportScratch_.capacity()) * sizeof(FaceRef) +
            (room_.capacity() + roomScratch_.capacity()) * sizeof(Room) +
            (active_.capacity() + id_.capacity() + idScratch_.capacity() + newOrder_.capacity()) * sizeof(int) +
-           sortKeys_.capacity() * sizeof(SlotKey) +
            (cellKey_.capacity() + cellSlot_.capacity() + keyScratch_.capacity() + slotScratch_.capacity() +
             histogram_.capacity()) *
                sizeof(std::uint32_t) +

@@ -108,6 +108,9 @@ private:
     };
     Cell cellOf(const Eigen::Vector3d& p) const;
     std::uint32_t keyOf(const Eigen::Vector3d& p) const;
+    // cellKey_ and cellSlot_: the active balls' keys and slots by key, slots in increasing
+    // order within a key (stable counting sorts of active_, which is in slot order).
+    void sortActiveByColumn();
     void buildCells();
     void findPairs(int chunk);
     // One pass over the listed pairs, the speculative contacts of pairs apart that meet
@@ -147,11 +150,6 @@ private:
     std::vector<Room> room_;
     std::vector<int> id_;
     std::vector<int> active_; // the slots of the balls on the street, in slot order
-    struct SlotKey {
-        std::uint32_t column;
-        int slot;
-    };
-    std::vector<SlotKey> sortKeys_;
     std::vector<int> newOrder_;
     std::vector<Ball> ballScratch_;
     std::vector<FaceRef> supportScratch_;

@@ -41,10 +41,10 @@ Layout::Layout(double slopeRadians, int blocks_, double blockLength_, double cro
 {
     build(cars_, balls);
     // A ball reaches r beyond its centre and moves about r in a substep (street_engine.cpp;
-    // an impulse between two balls can raise a speed by up to sqrt 2): items within 4 r of its
-    // x are every item it can touch.
-    // Half a metre (or 4 r, if more): a ball away from every listed box has that much room
-    // before a box left out of its list can matter (street_flight.cpp point 2).
+    // an impulse between two balls can raise a speed by up to sqrt 2), so items within 4 r of
+    // its x are every item it can touch; half a metre (if more) leaves a ball away from every
+    // listed box that much room before a box left out of its list can matter (street_flight.cpp
+    // point 2).
     bin(std::max(4.0 * radius, 0.5));
 }
 

@@ -103,13 +103,12 @@ void sortByDigit(const std::vector<std::uint32_t>& key, const std::vector<std::u
 
 } // namespace
 
-void Engine::buildCells()
+void Engine::sortActiveByColumn()
 {
-    // Point 1: keys in active order, sorted by z then (stably) by x; then the centres in order.
+    // Point 1: keys in active order, sorted by z then (stably) by x.
     const std::size_t count = active_.size();
     for (auto* v : {&cellKey_, &cellSlot_, &keyScratch_, &slotScratch_})
         v->resize(count);
-    cellPos_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
         const auto slot = static_cast<std::uint32_t>(active_[k]);
         cellKey_[k] = keyOf(balls_[slot].p);
@@ -121,6 +120,14 @@ void Engine::buildCells()
                 [zMask](std::uint32_t key) { return key & zMask; });
     sortByDigit(keyScratch_, slotScratch_, cellKey_, cellSlot_, histogram_, static_cast<std::size_t>(columns_.nx),
                 [zBits](std::uint32_t key) { return key >> zBits; });
+}
+
+void Engine::buildCells()
+{
+    // Point 1: the balls sorted by column, then their centres in that order.
+    sortActiveByColumn();
+    const std::size_t count = active_.size();
+    cellPos_.resize(count);
     for (std::size_t s = 0; s < count; ++s)
         cellPos_[s] = balls_[cellSlot_[s]].p;
     pairs_.resize((count + kPairChunk - 1) / kPairChunk);
