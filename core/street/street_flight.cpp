@@ -33,6 +33,7 @@ constexpr double kLeaveSpeed = 1e-9;
 // Taken off a measured room (relative to r): far above the round-off of a distance between
 // points some hundred metres from the origin (point 2).
 constexpr double kRoomSlack = 1e-9;
+constexpr int kSettleSweeps = 3; // sweeps of settle over the boxes near a ball, at most
 
 // The event that ends a leg of the motion.
 enum class Event { None, Face, Leave, Roll };
@@ -339,21 +340,32 @@ bool Engine::settle(int i, long long& impacts)
     };
     if (room.room > 0.0 && (room.nearest < 0 || clearOf(room.nearest)))
         return false; // no box within r (point 2)
+    // A push out of one box can press the ball into another it is within r of (two boxes
+    // meeting at an angle, the kerb beside the road): the sweep runs again while it pushed
+    // with two boxes or more that close, three sweeps at most.
     bool changed = false;
     Nearest near;
-    for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
-        const Box& box = layout_.boxes[item];
-        const Eigen::Vector3d local = box.toLocal(b.p);
-        const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
-        Eigen::Vector3d away = local - closest;
-        double dist = away.norm();
-        near.add(item, dist);
-        if (!(dist < r * (1.0 - 1e-12)))
-            continue;
-        if (sup.valid() && sup.item == item && rests())
-            continue; // resting on this box's face
-        pushOut(b, sup, item, local, away, dist, impacts);
-        changed = true;
+    for (int sweep = 0; sweep < kSettleSweeps; ++sweep) {
+        near = Nearest{};
+        int pushed = 0, close = 0;
+        for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
+            const Box& box = layout_.boxes[item];
+            const Eigen::Vector3d local = box.toLocal(b.p);
+            const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
+            Eigen::Vector3d away = local - closest;
+            double dist = away.norm();
+            near.add(item, dist);
+            if (!(dist < r * (1.0 - 1e-12)))
+                continue;
+            ++close;
+            if (sup.valid() && sup.item == item && rests())
+                continue; // resting on this box's face
+            pushOut(b, sup, item, local, away, dist, impacts);
+            ++pushed;
+        }
+        changed = changed || pushed > 0;
+        if (pushed == 0 || close < 2)
+            break;
     }
     // A push brought a box within r: no room until the next whole search.
     room = changed ? Room{} : Room{std::min(near.second, layout_.binPad()) - (1.0 + kRoomSlack) * r, near.item};

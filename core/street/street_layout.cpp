@@ -73,22 +73,24 @@ int Layout::carSlots(int blocks, double blockLength)
     return slots;
 }
 
-void Layout::addSegment(ItemKind kind, int segment, double x0, double y0, double length, double angle)
+void Layout::addSegment(const Segment& seg)
 {
     // The road: a box whose top face runs from (x0, y0) for `length` at `angle`, under the
-    // sidewalks too; the sidewalks: boxes on it whose tops are `kerb` higher.
-    const Eigen::Vector3d along(std::cos(angle), std::sin(angle), 0.0), up(-std::sin(angle), std::cos(angle), 0.0);
-    const Eigen::Vector3d topMiddle = Eigen::Vector3d(x0, y0, 0.0) + 0.5 * length * along;
+    // sidewalks too; the sidewalks: boxes on it whose tops are `kerb` higher, reaching
+    // `before` and `after` past the road's ends along it (the mitre, see build).
+    const Eigen::Vector3d along(std::cos(seg.angle), std::sin(seg.angle), 0.0),
+        up(-std::sin(seg.angle), std::cos(seg.angle), 0.0);
+    const Eigen::Vector3d topMiddle = Eigen::Vector3d(seg.x0, seg.y0, 0.0) + 0.5 * seg.length * along;
     const double across = 0.5 * width + sidewalk;
-    boxes.push_back(
-        {kind, segment, topMiddle - 0.5 * kGround * up, angle, Eigen::Vector3d(0.5 * length, 0.5 * kGround, across)});
+    boxes.push_back({seg.kind, seg.index, topMiddle - 0.5 * kGround * up, seg.angle,
+                     Eigen::Vector3d(0.5 * seg.length, 0.5 * kGround, across)});
     if (sidewalk > 0.0)
         for (double side : {-1.0, 1.0}) {
             const double half = 0.5 * (kGround + kerb);
-            const Eigen::Vector3d centre =
-                topMiddle + (kerb - half) * up + Eigen::Vector3d(0.0, 0.0, side * (0.5 * width + 0.5 * sidewalk));
-            boxes.push_back(
-                {ItemKind::Sidewalk, segment, centre, angle, Eigen::Vector3d(0.5 * length, half, 0.5 * sidewalk)});
+            const Eigen::Vector3d centre = topMiddle + 0.5 * (seg.after - seg.before) * along + (kerb - half) * up +
+                                           Eigen::Vector3d(0.0, 0.0, side * (0.5 * width + 0.5 * sidewalk));
+            boxes.push_back({ItemKind::Sidewalk, seg.index, centre, seg.angle,
+                             Eigen::Vector3d(0.5 * (seg.length + seg.before + seg.after), half, 0.5 * sidewalk)});
         }
 }
 
@@ -118,16 +120,25 @@ void Layout::build(int carCount, int balls)
     // Above the hopper's top by more than any rebound can rise (energy: no ball rises above
     // its start height).
     houseTop = height + hopper.top() + 10.0;
-    addSegment(ItemKind::Crossing, -1, xTop, height, crossing, 0.0);
+    // Where a flat crossing tips into a block, the sidewalks' tops (kerb above the road, each
+    // along its own normal) would end kerb sin(slope) apart across x, leaving a notch between
+    // two box edges that a ball can wedge in. Each reaches on to where the two top lines cross
+    // (the mitre): with the crossing's top y = y_c + k and the block's through
+    // (x_c + k sin a, y_c + k cos a) falling at tan a, they meet at x = x_c + k (1 - cos a) / sin a
+    // = x_c + k tan(a/2), k tan(a/2) past the crossing's end and (k sin a - k tan(a/2)) / cos a
+    // = k tan(a/2) before the block's start along the block. Where a block meets the crossing
+    // below it, the lower sidewalk already covers the upper one's end.
+    const double mitre = kerb * std::tan(0.5 * slope);
+    addSegment({ItemKind::Crossing, -1, xTop, height, crossing, 0.0, 0.0, mitre});
     double x = 0.0, y = height;
     for (int k = 0; k < blocks; ++k) {
         blockStartX.push_back(x);
-        addSegment(ItemKind::Road, k, x, y, blockLength, -slope);
+        addSegment({ItemKind::Road, k, x, y, blockLength, -slope, mitre, 0.0});
         x += run;
         y -= drop;
         blockFootX.push_back(x);
         if (k + 1 < blocks) {
-            addSegment(ItemKind::Crossing, k, x, y, crossing, 0.0);
+            addSegment({ItemKind::Crossing, k, x, y, crossing, 0.0, 0.0, mitre});
             x += crossing;
         }
     }

@@ -99,7 +99,14 @@ struct Layout {
 private:
     void build(int cars, int balls);
     void placeHopper(int balls);
-    void addSegment(ItemKind kind, int segment, double x0, double y0, double length, double angle);
+    // A road block or a crossing: its road's top face from (x0, y0), `length` long at `angle`;
+    // its sidewalks reach `before` and `after` beyond that along it.
+    struct Segment {
+        ItemKind kind;
+        int index;
+        double x0, y0, length, angle, before, after;
+    };
+    void addSegment(const Segment& seg);
     void bin(double pad);
 
     double binLo_ = 0.0, binWidth_ = 1.0, binPad_ = 0.0;
