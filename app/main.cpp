@@ -4,6 +4,7 @@
 //  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]
 //  [--compare MODEL[:INTEGRATOR[:IMPACTS]]]`.
 #include "cli/suggest.h"
+#include "frame_measure.h"
 #include "window_options.h"
 
 #include "ui/i18n/language.h"
@@ -12,134 +13,22 @@
 #include "ui/settings/window_settings.h"
 #include "ui/shell/window_shell.h"
 #include "ui/theme/theme.h"
-#include "ui/view/ball_view.h"
 
 #include "core/io/atomic_file.h"
 #include "core/io/preset.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QDir>
-#include <QElapsedTimer>
-#include <QFile>
 #include <QIcon>
 #include <QLocale>
 #include <QSettings>
 #include <QSurfaceFormat>
-#include <QTimer>
 
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <optional>
 #include <string>
-#include <unistd.h>
 #include <vector>
-
-namespace {
-
-// CPU seconds used so far by this process's threads other than the stepping thread
-// ("ab-stepper"): the window's own thread and the software renderer's. Linux only.
-double drawingCpuSeconds()
-{
-    double ticks = 0.0;
-    QDir tasks("/proc/self/task");
-    for (const QString& tid : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
-        QFile stat(tasks.filePath(tid + "/stat"));
-        if (!stat.open(QIODevice::ReadOnly))
-            continue;
-        const QString line = QString::fromLatin1(stat.readAll());
-        const int open = line.indexOf('('), close = line.lastIndexOf(')');
-        if (line.mid(open + 1, close - open - 1) == QLatin1String("ab-stepper"))
-            continue;
-        const QStringList fields = line.mid(close + 2).split(' ');
-        if (fields.size() > 12)
-            ticks += fields[11].toDouble() + fields[12].toDouble(); // utime, stime
-    }
-    return ticks / double(sysconf(_SC_CLK_TCK));
-}
-
-// --measure-frames: plays with the turntable on (so every frame is drawn anew) and on
-// through the health check's pauses, then prints the frame times and quits. The frames of
-// the first half second (shaders compiled, buffers made, the window mapped) are reported
-// apart as the start-up; the figures are those of the playing that follows, with the
-// moments of its longest intervals. The run's own options come from --scene and --set.
-void measureFrames(ab::ui::MainWindow& window, double seconds)
-{
-    struct Sample {
-        double at, paint, interval; // seconds since play, milliseconds, milliseconds
-    };
-    auto* samples = new std::vector<Sample>;
-    auto* clock = new QElapsedTimer;
-    ab::ui::BallView* view = window.view();
-    if (!view) {
-        std::fprintf(
-            stderr, "amazeballs: %s\n",
-            qPrintable(QApplication::translate("main", "--measure-frames needs the 3D view (an OpenGL platform)")));
-        QTimer::singleShot(0, qApp, [] { QCoreApplication::exit(2); });
-        return;
-    }
-    QObject::connect(view, &ab::ui::BallView::framePainted, view, [samples, clock](double paint, double interval) {
-        samples->push_back({double(clock->nsecsElapsed()) / 1e9, paint, interval});
-    });
-    window.setTurntable(true);
-    clock->start();
-    window.controller().play();
-    // A measurement plays on through the health check's pauses (it still reports them).
-    QObject::connect(&window.controller(), &ab::ui::RunController::playingChanged, &window, [&window](bool playing) {
-        if (!playing && window.controller().status().pausedOnHealth)
-            window.controller().play();
-    });
-    const double cpuStart = drawingCpuSeconds();
-    QTimer::singleShot(int(seconds * 1000), qApp, [samples, clock, &window, cpuStart] {
-        constexpr double startUp = 0.5; // seconds from the first frame
-        const double cpu = drawingCpuSeconds() - cpuStart;
-        const std::size_t frames = samples->size();
-        const double firstAt = samples->empty() ? 0.0 : samples->front().at;
-        std::vector<Sample> playing, first;
-        for (const Sample& s : *samples)
-            (s.at - firstAt < startUp ? first : playing).push_back(s);
-        std::vector<double> paint, interval;
-        for (const Sample& s : playing) {
-            paint.push_back(s.paint);
-            interval.push_back(s.interval);
-        }
-        std::sort(paint.begin(), paint.end());
-        std::sort(interval.begin(), interval.end());
-        // Fixed decimals whatever the locale (printf's follow LC_NUMERIC, which Qt sets).
-        auto ms = [](double x, int decimals = 1) {
-            char text[32];
-            const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::fixed, decimals).ptr;
-            return std::string(text, end);
-        };
-        auto pct = [&](const std::vector<double>& v, double q) {
-            return ms(v.empty() ? 0.0 : v[std::size_t(q * double(v.size() - 1))]);
-        };
-        double firstLongest = 0.0;
-        for (const Sample& s : first)
-            firstLongest = std::max(firstLongest, s.interval);
-        std::sort(playing.begin(), playing.end(),
-                  [](const Sample& a, const Sample& b) { return a.interval > b.interval; });
-        std::string longest;
-        for (std::size_t k = 0; k < std::min<std::size_t>(3, playing.size()); ++k)
-            longest += (k ? ", " : "") + ms(playing[k].interval) + " ms at " + ms(playing[k].at - firstAt, 2) + " s";
-        const auto st = window.controller().status();
-        const std::string line = "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) +
-                                 " p95 " + pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " +
-                                 pct(interval, 0.5) + " p95 " + pct(interval, 0.95) + " max " + pct(interval, 1.0) +
-                                 "; drawing CPU per frame " + ms(frames ? 1e3 * cpu / double(frames) : 0.0) +
-                                 " ms; simulation: " + std::to_string(st.steps) + " steps, step " +
-                                 ms(st.stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " +
-                                 ms(startUp) + " s of frames): " + std::to_string(first.size()) + " frames, longest " +
-                                 ms(firstLongest) + " ms\n";
-        std::fputs(line.c_str(), stdout);
-        delete samples;
-        delete clock;
-        QCoreApplication::quit();
-    });
-}
-
-} // namespace
 
 namespace {
 
@@ -230,26 +119,53 @@ struct Options {
     bool play = false, fresh = false, lecture = false;
 };
 
+std::vector<std::string> paramKeys(const ab::SceneInfo& info)
+{
+    std::vector<std::string> keys;
+    for (const ab::ParamSpec& p : info.params)
+        keys.push_back(p.key);
+    return keys;
+}
+
 // A --set checked against the stage it is for, or, with no stage named, against the first
-// stage that has the parameter (the window checks it again against its stage).
+// stage that has the parameter (the window checks it again against its stage). A name no
+// stage has is named with the nearest names, as amazeballs-cli names it.
 void checkAssignment(const QString& assignment, std::optional<ab::SceneId> scene)
 {
     const std::string text = assignment.toStdString();
-    if (scene) {
-        ab::RunSpec(*scene).params.parseAssignment(text);
-        return;
-    }
     const auto eq = text.find('=');
     std::string name = text.substr(0, eq);
     name.erase(0, name.find_first_not_of(" \t"));
     name.erase(name.find_last_not_of(" \t") + 1);
+    const QString printed = QString::fromStdString(ab::printableInput(name));
+    const auto unknown = [&](const std::vector<std::string>& names, QString why) {
+        const std::vector<std::string> near = ab::cli::nearest(name, names);
+        why += near.empty()
+                   ? QApplication::translate("main", " (man amazeballs lists them)")
+                   : QApplication::translate("main", " (did you mean %1?)").arg(QString::fromStdString(near.front()));
+        return ab::InputError(why.toStdString());
+    };
+    if (scene) {
+        const ab::SceneInfo& info = ab::sceneInfo(*scene);
+        if (eq != std::string::npos && !name.empty() && !ab::RunSpec(*scene).params.indexOf(name))
+            throw unknown(paramKeys(info), QApplication::translate("main", "--set: unknown parameter '%1' for %2")
+                                               .arg(printed, QString::fromStdString(info.key)));
+        ab::RunSpec(*scene).params.parseAssignment(text);
+        return;
+    }
+    std::vector<std::string> all;
     for (const ab::SceneInfo* info : ab::allScenes()) {
         ab::RunSpec spec(info->id);
         if (eq != std::string::npos && spec.params.indexOf(name)) {
             spec.params.parseAssignment(text);
             return;
         }
+        for (const std::string& key : paramKeys(*info))
+            if (std::find(all.begin(), all.end(), key) == all.end())
+                all.push_back(key);
     }
+    if (eq != std::string::npos && !name.empty())
+        throw unknown(all, QApplication::translate("main", "--set: no stage has a parameter '%1'").arg(printed));
     ab::RunSpec(ab::allScenes().front()->id).params.parseAssignment(text); // names what is wrong
 }
 
@@ -471,7 +387,7 @@ int main(int argc, char** argv)
     if (options.lecture)
         shell.lecture().setActive(true);
     if (options.measureSeconds)
-        measureFrames(window, *options.measureSeconds);
+        ab::app::measureFrames(window, *options.measureSeconds);
     else if (options.play)
         window.controller().play();
     return app.exec();

@@ -3224,5 +3224,17 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source> (did you mean %1?)</source>
         <translation> (menade du %1?)</translation>
     </message>
+    <message>
+        <source> (man amazeballs lists them)</source>
+        <translation> (man amazeballs listar dem)</translation>
+    </message>
+    <message>
+        <source>--set: unknown parameter &apos;%1&apos; for %2</source>
+        <translation>--set: okänd parameter &apos;%1&apos; för %2</translation>
+    </message>
+    <message>
+        <source>--set: no stage has a parameter &apos;%1&apos;</source>
+        <translation>--set: ingen etapp har en parameter &apos;%1&apos;</translation>
+    </message>
 </context>
 </TS>

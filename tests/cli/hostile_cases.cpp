@@ -396,6 +396,8 @@ void addWindowCases(std::vector<Case>& c)
     window("a missing preset", {"none.json"}, 2, 1, "no such file");
     window("a FIFO preset", {"p.json"}, 2, 1, "FIFO", [](const fs::path& d) { fifo(d / "p.json"); });
     window("a bad --set", {"--scene", "bounce1d", "--set", "g=abc"}, 2, 1, "not a number");
+    window("a misspelt --set name", {"--scene", "bounce1d", "--set", "hh=1"}, 2, 1, "did you mean h0?");
+    window("a --set name of no stage", {"--set", "zzzzqq=1"}, 2, 1, "no stage has a parameter 'zzzzqq'");
 #else
     (void)c;
 #endif
