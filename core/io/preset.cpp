@@ -7,7 +7,7 @@
 //     "version": 1,
 //     "name": "One ball in a box, as in the report",   a short title
 //     "description": "...",                            one or two sentences (optional)
-//     "scene": "box3d",                                bounce1d | box3d | two-balls | many-balls
+//     "scene": "box3d",                                bounce1d | box3d | two-balls | many-balls | street
 //     "model": "report",                               report | physical
 //     "integrator": "rk4",                             any integrator key (optional)
 //     "impacts": "located",                            located | step-end (optional)
@@ -35,6 +35,7 @@
 #include "atomic_file.h"
 #include "embedded_presets.h"
 #include "input_file.h"
+#include "preset_document.h"
 #include "strict_json.h"
 
 #include <algorithm>
@@ -51,7 +52,6 @@ namespace {
 using json::Document;
 using Kind = Document::value_t;
 
-constexpr std::string_view formatTag = "amazeballs-preset";
 constexpr long long maxSteps = 4'000'000'000LL; // as `run --steps`
 
 // Where a value sits in the document, for messages: the file and a dotted path.
@@ -194,8 +194,9 @@ void readHeader(const Document& doc, const Where& root)
 {
     expectKind(doc, Kind::object, root);
     const Document& format = required(doc, "format", root);
-    if (!format.is_string() || format.get_ref<const std::string&>() != formatTag)
-        (root / "format").fail("this is not an Amazeballs preset (expected \"" + std::string(formatTag) + "\")");
+    if (!format.is_string() || format.get_ref<const std::string&>() != presetfile::formatTag)
+        (root / "format")
+            .fail("this is not an Amazeballs preset (expected \"" + std::string(presetfile::formatTag) + "\")");
     const Where at = root / "version";
     const double version = number(required(doc, "version", root), at);
     if (version > Preset::currentVersion)
@@ -360,78 +361,6 @@ ParamValues checkPreset(const Preset& p, const std::string& origin)
     return values;
 }
 
-// ---- Writing ---------------------------------------------------------------------------
-
-// Numbers are written as doubles, as the reader makes them.
-Document vectorValue(const Eigen::Vector3d& v)
-{
-    return Document::array({v.x(), v.y(), v.z()});
-}
-
-Document viewValue(const PresetView& view)
-{
-    Document camera = Document::object();
-    if (view.cameraYaw)
-        camera["yaw"] = *view.cameraYaw;
-    if (view.cameraPitch)
-        camera["pitch"] = *view.cameraPitch;
-    if (view.cameraDistance)
-        camera["distance"] = *view.cameraDistance;
-    if (view.cameraTarget)
-        camera["target"] = vectorValue(*view.cameraTarget);
-    Document out = Document::object();
-    if (!camera.empty())
-        out["camera"] = std::move(camera);
-    if (!view.charts.empty())
-        out["charts"] = view.charts;
-    if (view.selectedBall)
-        out["selected_ball"] = static_cast<double>(*view.selectedBall);
-    if (view.speed)
-        out["speed"] = *view.speed;
-    if (view.compare) {
-        Document compare = Document::object();
-        compare["model"] = std::string(modelKey(view.compare->model));
-        compare["integrator"] = std::string(integratorKey(view.compare->integrator));
-        compare["impacts"] = std::string(impactModeKey(view.compare->impacts));
-        if (view.compare->dt)
-            compare["dt"] = *view.compare->dt;
-        out["compare"] = std::move(compare);
-    }
-    return out;
-}
-
-Document presetValue(const Preset& p)
-{
-    const SceneInfo& info = sceneInfo(p.scene);
-    Document doc = Document::object();
-    doc["format"] = std::string(formatTag);
-    doc["version"] = static_cast<double>(Preset::currentVersion);
-    doc["name"] = p.name;
-    doc["description"] = p.description;
-    doc["scene"] = info.key;
-    doc["model"] = std::string(modelKey(p.model));
-    if (p.integrator)
-        doc["integrator"] = std::string(integratorKey(*p.integrator));
-    if (p.impacts)
-        doc["impacts"] = std::string(impactModeKey(*p.impacts));
-    if (p.dt)
-        doc["dt"] = *p.dt;
-    if (p.steps)
-        doc["steps"] = static_cast<double>(*p.steps); // exact: steps <= 4e9 < 2^53
-    if (!p.params.empty()) {
-        Document params = Document::object();
-        for (const auto& [name, value] : p.params) {
-            const bool isVector = findParam(info, name)->kind == ParamKind::Vector; // checked above
-            params[name] = isVector ? vectorValue(value) : Document(value.x());
-        }
-        doc["params"] = std::move(params);
-    }
-    Document view = viewValue(p.view);
-    if (!view.empty())
-        doc["view"] = std::move(view);
-    return doc;
-}
-
 // How messages name a preset that has no file.
 std::string presetOrigin(const Preset& p)
 {
@@ -480,7 +409,7 @@ Preset parsePreset(std::string_view jsonText, const std::string& origin)
 std::string presetToJson(const Preset& preset)
 {
     checkPreset(preset, presetOrigin(preset));
-    return json::write(presetValue(preset));
+    return json::write(presetfile::document(preset));
 }
 
 void savePreset(const std::filesystem::path& path, const Preset& preset)
