@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-// What the suite's case files share (cases.cpp, spin_cases.cpp): row builders and the
+// What the suite's case files share (cases.cpp, spin_cases.cpp, ...): row builders, probes and the
 // integrator lists, and the cases kept in a file of their own.
 #pragma once
 
 #include "suite.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,14 @@ std::vector<CaseRow> physicalRows(const CaseRow& base, const std::vector<Integra
 // Physical rows whose start the model must refuse (the refusal is the outcome checked).
 std::vector<CaseRow> refusedPhysicalRows(const CaseRow& base);
 void append(std::vector<CaseRow>& to, std::vector<CaseRow> rows);
+
+// Probes of bounce1d and box3d runs (bounce_probes.cpp): free flight against the parabola
+// until the first contact; contacts against Zeno's sum (the exact rest time); the energy at
+// the end against the start; the largest move in one step, in box sides.
+std::unique_ptr<Probe> flightProbe(const Simulation& sim);
+std::unique_ptr<Probe> zenoProbe(const Simulation& sim);
+std::unique_ptr<Probe> driftProbe(const Simulation& sim);
+std::unique_ptr<Probe> jumpProbe(const Simulation& sim);
 
 // Rough balls (docs/spin.md, spin_cases.cpp).
 std::vector<CaseRow> spinEnergyDrift();

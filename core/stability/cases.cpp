@@ -71,124 +71,6 @@ void append(std::vector<CaseRow>& to, std::vector<CaseRow> rows)
 
 namespace {
 
-// bounce1d: free flight against the parabola y = h0 + v0 t - g t^2 / 2 until the first
-// contact (reference_error, in the scene's length unit).
-class FlightProbe final : public Probe {
-public:
-    explicit FlightProbe(const RunSpec& spec)
-        : h0_(spec.params.real("h0")), v0_(spec.params.real("v0")), g_(spec.params.real("g")),
-          landing_(physical::timeToFloor(h0_, v0_, g_))
-    {
-    }
-
-    void observe(const State& s) override
-    {
-        if (s.t >= landing_ || s.count > 0)
-            return;
-        error_ = std::max(error_, std::abs(s.p(1, 0) - (h0_ + v0_ * s.t - 0.5 * g_ * s.t * s.t)));
-        checked_ = true;
-    }
-    std::optional<double> error() const override { return checked_ ? std::optional(error_) : std::nullopt; }
-    std::string note() const override
-    {
-        return checked_ ? "flight error against the parabola " + num(error_) : std::string();
-    }
-
-private:
-    double h0_, v0_, g_, landing_;
-    double error_ = 0.0;
-    bool checked_ = false;
-};
-
-// bounce1d: contacts against Zeno's sum. An impulse ball dropped with impact speed u
-// bounces for 2 k u / g, 2 k^2 u / g, ...: it rests at t_fall + 2 k u / (g (1 - k)).
-class ZenoProbe final : public Probe {
-public:
-    explicit ZenoProbe(const RunSpec& spec)
-    {
-        const double h0 = spec.params.real("h0"), v0 = spec.params.real("v0"), g = spec.params.real("g");
-        const double k = spec.params.real("k");
-        const double fall = physical::timeToFloor(h0, v0, g);
-        rest_ = fall + 2.0 * k * std::abs(v0 - g * fall) / (g * (1.0 - k));
-    }
-
-    void observe(const State& s) override
-    {
-        if (s.count > contacts_) {
-            contacts_ = s.count;
-            last_ = s.t;
-            if (s.t > rest_)
-                ++late_;
-        }
-        if (s.halted && halt_ < 0.0)
-            halt_ = s.t;
-        end_ = s.t;
-    }
-    std::string note() const override
-    {
-        std::string n = "exact rest (impulse) at t = " + num(rest_) + "; " + std::to_string(contacts_) +
-                        " contacts, the last at t = " + num(last_);
-        if (halt_ >= 0.0)
-            n += "; zeroed by the bounce limit at t = " + num(halt_);
-        if (late_ > 0)
-            n += "; " + std::to_string(late_) + " contacts after the exact rest (chatter)";
-        return n;
-    }
-
-private:
-    double rest_ = 0.0, last_ = 0.0, halt_ = -1.0, end_ = 0.0;
-    long long contacts_ = 0, late_ = 0;
-};
-
-// bounce1d: the energy at the end against the start (drift over a long run).
-class DriftProbe final : public Probe {
-public:
-    explicit DriftProbe(const RunSpec& spec) : g_(spec.params.real("g")), e0_(physical::startEnergy(spec))
-    {
-        if (spec.model == ModelKind::Physical && physical::contactLawOf(spec) != physical::ContactLaw::Impulse)
-            floor_ = physical::springFloorFor(spec);
-    }
-
-    void observe(const State& s) override
-    {
-        const double y = s.p(1, 0);
-        end_ = 0.5 * s.v(1, 0) * s.v(1, 0) + (floor_ ? floor_->potential(y) : g_ * y);
-    }
-    std::string note() const override { return "energy at the end " + num(end_ / e0_) + " x the start"; }
-
-private:
-    double g_, e0_;
-    double end_ = 0.0;
-    std::optional<physical::SpringFloor> floor_;
-};
-
-// The largest distance a ball's velocity carries it in one step, in box sides: above 1 a
-// step can skip a wall entirely, whatever the state at the step's end shows (the report's
-// box3d clamps that state back onto the wall it crossed).
-class JumpProbe final : public Probe {
-public:
-    explicit JumpProbe(const RunSpec& spec)
-        : box_(spec.params.real("box")), dt_(spec.dt.value_or(defaultDt(spec.scene, spec.model)))
-    {
-    }
-
-    void observe(const State& s) override
-    {
-        if (s.size() > 0)
-            jump_ = std::max(jump_, s.v.colwise().norm().maxCoeff() * dt_ / box_);
-    }
-    std::string note() const override { return "largest move in one step " + num(jump_) + " x the box side"; }
-
-private:
-    double box_, dt_;
-    double jump_ = 0.0;
-};
-
-template <typename P> std::function<std::unique_ptr<Probe>(const Simulation&)> probe()
-{
-    return [](const Simulation& sim) { return std::make_unique<P>(sim.spec()); };
-}
-
 // --- stiff spring -----------------------------------------------------------------
 
 // Limits on the damped oscillator of the spring (zeta from k), measured as the tests do;
@@ -267,7 +149,7 @@ std::vector<CaseRow> coarseStep()
         const std::string setting = "stage 1, dt " + num(dt) + " step";
         const auto steps = static_cast<long long>(2000.0 / dt);
         CaseRow r = reportRow("coarse-step", setting, SceneId::Bounce1d, {}, dt, steps);
-        r.probe = probe<FlightProbe>();
+        r.probe = flightProbe;
         rows.push_back(r);
         append(rows, physicalRows(r, impulseIntegrators));
     }
@@ -280,7 +162,7 @@ std::vector<CaseRow> energyDrift()
     // integrator at dt omega0 = 0.63 (t_c = 5), and the impulse model when it builds.
     CaseRow r = reportRow("energy-drift", "k = 1, 1e6 steps", SceneId::Bounce1d, {"k=1", "max_bounces=1000000000"}, 1.0,
                           1'000'000);
-    r.probe = probe<DriftProbe>();
+    r.probe = driftProbe;
     std::vector<CaseRow> rows{r};
     append(rows, physicalRows(r, impulseIntegrators));
     CaseRow spring = r;
@@ -312,7 +194,7 @@ std::vector<CaseRow> zeno(double k)
     const std::string kSet = "k=" + num(k);
     CaseRow limited =
         reportRow(name, "k = " + num(k) + ", the report's bounce limit 10", SceneId::Bounce1d, {kSet}, 1.0, steps);
-    limited.probe = probe<ZenoProbe>();
+    limited.probe = zenoProbe;
     CaseRow unlimited = limited;
     unlimited.assignments.push_back("max_bounces=1000000000");
     unlimited.setting = "k = " + num(k) + ", no bounce limit";
@@ -329,7 +211,7 @@ std::vector<CaseRow> tinyStep()
 {
     // dt = 1e-7 for 1e7 steps of free fall: what remains of the error is mostly round-off.
     CaseRow r = reportRow("tiny-step", "dt 1e-7, 1e7 steps of flight", SceneId::Bounce1d, {}, 1e-7, 10'000'000);
-    r.probe = probe<FlightProbe>();
+    r.probe = flightProbe;
     std::vector<CaseRow> rows{r};
     append(rows, physicalRows(r, impulseIntegrators));
     CaseRow spring = r;
@@ -360,7 +242,7 @@ std::vector<CaseRow> tunnelling()
         CaseRow r = reportRow("tunnelling",
                               "box3d, vx " + num(speed) + " m/s (" + num(speed * 0.01 / 300.0) + " x the box per step)",
                               SceneId::Box3d, {"v0=" + num(speed) + ",0,0", "p0=150,20,150"}, std::nullopt, 200);
-        r.probe = probe<JumpProbe>();
+        r.probe = jumpProbe;
         rows.push_back(r);
         append(rows, physicalRows(r, impulseIntegrators));
     }
