@@ -16,6 +16,14 @@ Document vectorValue(const Eigen::Vector3d& v)
     return Document::array({v.x(), v.y(), v.z()});
 }
 
+// A parameter the preset's check found in the scene's table.
+bool isVector(const SceneInfo& info, const std::string& name)
+{
+    const auto spec =
+        std::find_if(info.params.begin(), info.params.end(), [&](const ParamSpec& s) { return s.key == name; });
+    return spec != info.params.end() && spec->kind == ParamKind::Vector;
+}
+
 Document viewValue(const PresetView& view)
 {
     Document camera = Document::object();
@@ -70,12 +78,8 @@ Document document(const Preset& p)
         doc["steps"] = static_cast<double>(*p.steps); // exact: steps <= 4e9 < 2^53
     if (!p.params.empty()) {
         Document params = Document::object();
-        for (const auto& [name, value] : p.params) {
-            const auto spec = std::find_if(info.params.begin(), info.params.end(),
-                                           [&](const ParamSpec& s) { return s.key == name; }); // checked: listed
-            const bool isVector = spec->kind == ParamKind::Vector;
-            params[name] = isVector ? vectorValue(value) : Document(value.x());
-        }
+        for (const auto& [name, value] : p.params)
+            params[name] = isVector(info, name) ? vectorValue(value) : Document(value.x());
         doc["params"] = std::move(params);
     }
     Document view = viewValue(p.view);
