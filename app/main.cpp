@@ -119,24 +119,13 @@ struct Options {
     bool play = false, fresh = false, lecture = false;
 };
 
-std::vector<std::string> paramKeys(const ab::SceneInfo& info)
-{
-    std::vector<std::string> keys;
-    for (const ab::ParamSpec& p : info.params)
-        keys.push_back(p.key);
-    return keys;
-}
-
 // A --set checked against the stage it is for, or, with no stage named, against the first
 // stage that has the parameter (the window checks it again against its stage). A name no
 // stage has is named with the nearest names, as amazeballs-cli names it.
 void checkAssignment(const QString& assignment, std::optional<ab::SceneId> scene)
 {
     const std::string text = assignment.toStdString();
-    const auto eq = text.find('=');
-    std::string name = text.substr(0, eq);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
+    const std::string name(ab::assignmentName(text));
     const QString printed = QString::fromStdString(ab::printableInput(name));
     const auto unknown = [&](const std::vector<std::string>& names, QString why) {
         const std::vector<std::string> near = ab::cli::nearest(name, names);
@@ -147,24 +136,24 @@ void checkAssignment(const QString& assignment, std::optional<ab::SceneId> scene
     };
     if (scene) {
         const ab::SceneInfo& info = ab::sceneInfo(*scene);
-        if (eq != std::string::npos && !name.empty() && !ab::RunSpec(*scene).params.indexOf(name))
-            throw unknown(paramKeys(info), QApplication::translate("main", "--set: unknown parameter '%1' for %2")
-                                               .arg(printed, QString::fromStdString(info.key)));
+        if (!name.empty() && !ab::RunSpec(*scene).params.indexOf(name))
+            throw unknown(info.paramKeys(), QApplication::translate("main", "--set: unknown parameter '%1' for %2")
+                                                .arg(printed, QString::fromStdString(info.key)));
         ab::RunSpec(*scene).params.parseAssignment(text);
         return;
     }
     std::vector<std::string> all;
     for (const ab::SceneInfo* info : ab::allScenes()) {
         ab::RunSpec spec(info->id);
-        if (eq != std::string::npos && spec.params.indexOf(name)) {
+        if (!name.empty() && spec.params.indexOf(name)) {
             spec.params.parseAssignment(text);
             return;
         }
-        for (const std::string& key : paramKeys(*info))
+        for (const std::string& key : info->paramKeys())
             if (std::find(all.begin(), all.end(), key) == all.end())
                 all.push_back(key);
     }
-    if (eq != std::string::npos && !name.empty())
+    if (!name.empty())
         throw unknown(all, QApplication::translate("main", "--set: no stage has a parameter '%1'").arg(printed));
     ab::RunSpec(ab::allScenes().front()->id).params.parseAssignment(text); // names what is wrong
 }

@@ -306,4 +306,10 @@ void ParamValues::parseAssignment(std::string_view assignment)
     parse(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
 }
 
+std::string_view assignmentName(std::string_view assignment)
+{
+    const auto eq = assignment.find('=');
+    return eq == std::string_view::npos ? std::string_view() : trim(assignment.substr(0, eq));
+}
+
 } // namespace ab

@@ -74,6 +74,9 @@ private:
     std::vector<Eigen::Vector3d> values_;
 };
 
+// The NAME of a --set "NAME=VALUE", blanks around it dropped; empty when there is no '='.
+std::string_view assignmentName(std::string_view assignment);
+
 // Parsing helpers shared by --set, presets and the app's fields. All throw InputError
 // with `what` (a parameter or option name) in the message.
 double parseReal(std::string_view text, std::string_view what);

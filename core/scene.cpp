@@ -3,6 +3,7 @@
 
 #include "scenes/scene_tables.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -60,6 +61,20 @@ const std::vector<const SceneInfo*>& allScenes()
                                                    scenes::makeManyBalls(), scenes::makeStreet()};
     static const std::vector<const SceneInfo*> list = {&infos[0], &infos[1], &infos[2], &infos[3], &infos[4]};
     return list;
+}
+
+const ParamSpec* SceneInfo::findParam(std::string_view name) const
+{
+    const auto spec = std::find_if(params.begin(), params.end(), [&](const ParamSpec& s) { return s.key == name; });
+    return spec == params.end() ? nullptr : &*spec;
+}
+
+std::vector<std::string> SceneInfo::paramKeys() const
+{
+    std::vector<std::string> keys;
+    for (const ParamSpec& p : params)
+        keys.push_back(p.key);
+    return keys;
 }
 
 const SceneInfo& sceneInfo(SceneId id)

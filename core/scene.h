@@ -58,6 +58,10 @@ struct SceneInfo {
     std::function<void(const ParamValues&)> crossCheck;
 
     ParamValues defaults() const { return ParamValues(&params); }
+    // The parameter of that name in the table; nullptr when there is none.
+    const ParamSpec* findParam(std::string_view name) const;
+    // Every parameter's name, in table order (for "known: ..." and "did you mean").
+    std::vector<std::string> paramKeys() const;
 };
 
 const std::vector<const SceneInfo*>& allScenes();

@@ -25,15 +25,6 @@ E readEnum(Parsed& args, const std::string& name, std::optional<E> (*parse)(std:
     return *value;
 }
 
-std::string_view trimmed(std::string_view s)
-{
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-        s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
-        s.remove_suffix(1);
-    return s;
-}
-
 constexpr long long kMaxSteps = 4'000'000'000LL;
 
 // The run's length: --steps, or the whole steps of --dt to reach --t-end, or the preset's
@@ -81,13 +72,9 @@ const SceneInfo* readSceneOperand(Parsed& args)
 
 void applyAssignment(RunSpec& spec, const std::string& assignment)
 {
-    const auto eq = assignment.find('=');
-    const std::string name(trimmed(std::string_view(assignment).substr(0, eq)));
-    if (eq != std::string::npos && !name.empty() && !spec.params.indexOf(name)) {
-        std::vector<std::string> names;
-        for (const ParamSpec& p : sceneInfo(spec.scene).params)
-            names.push_back(p.key);
-        const std::string near = didYouMean(name, names);
+    const std::string name(assignmentName(assignment));
+    if (!name.empty() && !spec.params.indexOf(name)) {
+        const std::string near = didYouMean(name, sceneInfo(spec.scene).paramKeys());
         throw InputError("--set: unknown parameter '" + printableInput(name) + "' for " + sceneInfo(spec.scene).key +
                          (near.empty() ? " (amazeballs-cli list names them)" : near));
     }
@@ -121,7 +108,7 @@ RunSetup readRunSetup(Parsed& args)
     std::optional<std::string> setN; // the --set that gave n, if one did
     for (const std::string& assignment : args.options("set")) {
         applyAssignment(spec, assignment);
-        if (const auto eq = assignment.find('='); trimmed(assignment.substr(0, eq)) == "n")
+        if (assignmentName(assignment) == "n")
             setN = assignment;
     }
     if (const auto init = args.option("init")) {

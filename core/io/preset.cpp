@@ -207,13 +207,6 @@ void readHeader(const Document& doc, const Where& root)
                 std::to_string(Preset::currentVersion) + ")");
 }
 
-const ParamSpec* findParam(const SceneInfo& info, std::string_view name)
-{
-    const auto spec =
-        std::find_if(info.params.begin(), info.params.end(), [&](const ParamSpec& s) { return s.key == name; });
-    return spec == info.params.end() ? nullptr : &*spec;
-}
-
 std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Document& v, const Where& at,
                                                                 const SceneInfo& info)
 {
@@ -221,13 +214,9 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> readParams(const Document& 
     std::vector<std::pair<std::string, Eigen::Vector3d>> params;
     for (const auto& [name, value] : members(v)) {
         const Where here = at / name;
-        const ParamSpec* spec = findParam(info, name);
-        if (!spec) {
-            std::vector<std::string> names;
-            for (const ParamSpec& s : info.params)
-                names.push_back(s.key);
-            here.fail("unknown parameter of " + info.key + " (known: " + joined(names) + ")");
-        }
+        const ParamSpec* spec = info.findParam(name);
+        if (!spec)
+            here.fail("unknown parameter of " + info.key + " (known: " + joined(info.paramKeys()) + ")");
         const Eigen::Vector3d x =
             spec->kind == ParamKind::Vector ? vector3(value, here) : Eigen::Vector3d(number(value, here), 0, 0);
         // A double holds every whole number up to 2^53 - 1; beyond, the text was rounded.

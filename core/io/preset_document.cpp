@@ -19,9 +19,8 @@ Document vectorValue(const Eigen::Vector3d& v)
 // A parameter the preset's check found in the scene's table.
 bool isVector(const SceneInfo& info, const std::string& name)
 {
-    const auto spec =
-        std::find_if(info.params.begin(), info.params.end(), [&](const ParamSpec& s) { return s.key == name; });
-    return spec != info.params.end() && spec->kind == ParamKind::Vector;
+    const ParamSpec* spec = info.findParam(name);
+    return spec && spec->kind == ParamKind::Vector;
 }
 
 Document viewValue(const PresetView& view)

@@ -39,6 +39,8 @@ class WorkerPool;
 
 namespace ab::street {
 
+struct NearestBoxes; // street_flight.cpp
+
 struct Settings {
     int n = 0;
     double radius = 0.03;
@@ -95,6 +97,15 @@ private:
     void fly(int i, double h, long long& impacts);
     // Returns true when it moved the ball or changed its velocity.
     bool settle(int i, long long& impacts);
+    // One sweep of settle over the boxes near ball i: each one the centre is within r of
+    // (`close`) is pushed out of unless the ball rests on it (`pushed`); `near` gathers the
+    // distances.
+    struct SweepCount {
+        int pushed = 0, close = 0;
+    };
+    SweepCount settleSweep(int i, NearestBoxes& near, long long& impacts);
+    // Ball i's centre is on its support's face, within the resting gap.
+    bool restsOnSupport(int i) const;
     // Moves a centre `dist` from box `item` (box coordinates `local`, `away` from its closest
     // point) out to r along the normal there, and meets the box (street_contact.h point 2).
     void pushOut(Ball& b, FaceRef& sup, int item, const Eigen::Vector3d& local, Eigen::Vector3d away, double dist,

@@ -23,6 +23,22 @@
 
 namespace ab::street {
 
+// The nearest of some boxes, and how far the next nearest is (point 2).
+struct NearestBoxes {
+    int item = -1;
+    double first = kNever, second = kNever;
+    void add(int k, double distance)
+    {
+        if (distance < first) {
+            second = first;
+            first = distance;
+            item = k;
+        } else {
+            second = std::min(second, distance);
+        }
+    }
+};
+
 namespace {
 
 constexpr int kMaxEvents = 32; // events a ball may meet in one substep; the rest of it is flown plainly
@@ -77,31 +93,15 @@ Leg legMotion(const Layout& layout, const Surface& surface, double r, Eigen::Vec
     return leg;
 }
 
-// The nearest of some boxes, and how far the next nearest is (point 2).
-struct Nearest {
-    int item = -1;
-    double first = kNever, second = kNever;
-    void add(int k, double distance)
-    {
-        if (distance < first) {
-            second = first;
-            first = distance;
-            item = k;
-        } else {
-            second = std::min(second, distance);
-        }
-    }
-};
-
 // The earliest face of the boxes `items` the ball meets within end.tau (St5: the root of
 // d0 + b t + q t^2 in each box's frame, where the faces are coordinate planes), its centre
 // then over the face. Returns the nearest of those boxes, by squared distance.
-Nearest nextFace(const Layout& layout, std::span<const std::uint16_t> items, double r, const Eigen::Vector3d& p,
-                 const Eigen::Vector3d& v, const Eigen::Vector3d& a, const FaceRef& sup, LegEnd& end)
+NearestBoxes nextFace(const Layout& layout, std::span<const std::uint16_t> items, double r, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& v, const Eigen::Vector3d& a, const FaceRef& sup, LegEnd& end)
 {
     const double T = end.tau;
     const double reach = r + T * v.norm() + 0.5 * T * T * a.norm(); // the farthest the ball gets in T
-    Nearest nearest;
+    NearestBoxes nearest;
     for (std::uint16_t item : items) {
         const Box& box = layout.boxes[item];
         const Eigen::Vector3d lp = box.toLocal(p);
@@ -264,7 +264,7 @@ void Engine::fly(int i, double h, long long& impacts)
                     nextFace(layout_, std::span(&own, 1), r, b.p, b.v, leg.a, sup, end);
                 }
             } else {
-                const Nearest near = nextFace(layout_, layout_.itemsNear(b.p.x()), r, b.p, b.v, leg.a, sup, end);
+                const NearestBoxes near = nextFace(layout_, layout_.itemsNear(b.p.x()), r, b.p, b.v, leg.a, sup, end);
                 room = Room{std::min(std::sqrt(near.second), layout_.binPad()) - (1.0 + kRoomSlack) * r, near.item};
             }
             if (sup.valid())
@@ -316,23 +316,51 @@ void Engine::pushOut(Ball& b, FaceRef& sup, int item, const Eigen::Vector3d& loc
     payForRise(b.v, (r - dist) * n.y(), settings_.g);
 }
 
+bool Engine::restsOnSupport(int i) const
+{
+    const FaceRef& sup = support_[static_cast<std::size_t>(i)];
+    return sup.valid() && std::abs(faceGap(layout_.boxes[static_cast<std::size_t>(sup.item)], sup.face,
+                                           balls_[static_cast<std::size_t>(i)].p, settings_.radius)) <=
+                              kRestGap * settings_.radius + 1e-12;
+}
+
+Engine::SweepCount Engine::settleSweep(int i, NearestBoxes& near, long long& impacts)
+{
+    Ball& b = balls_[static_cast<std::size_t>(i)];
+    FaceRef& sup = support_[static_cast<std::size_t>(i)];
+    const double r = settings_.radius;
+    SweepCount count;
+    for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
+        const Box& box = layout_.boxes[item];
+        const Eigen::Vector3d local = box.toLocal(b.p);
+        const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
+        Eigen::Vector3d away = local - closest;
+        double dist = away.norm();
+        near.add(item, dist);
+        if (!(dist < r * (1.0 - 1e-12)))
+            continue;
+        ++count.close;
+        if (sup.item == item && restsOnSupport(i))
+            continue; // resting on this box's face
+        pushOut(b, sup, item, local, away, dist, impacts);
+        ++count.pushed;
+    }
+    return count;
+}
+
 bool Engine::settle(int i, long long& impacts)
 {
     // Edges and corners (point 2 of street_contact.h), and any overlap a pair left: the
     // centre is moved out along the normal from the closest point of each box it is within
     // r of, and a ball moving in along that normal meets it.
-    Ball& b = balls_[static_cast<std::size_t>(i)];
-    FaceRef& sup = support_[static_cast<std::size_t>(i)];
+    const Ball& b = balls_[static_cast<std::size_t>(i)];
+    const FaceRef& sup = support_[static_cast<std::size_t>(i)];
     Room& room = room_[static_cast<std::size_t>(i)];
     const double r = settings_.radius;
-    const auto rests = [&] { // on its support's face
-        return std::abs(faceGap(layout_.boxes[static_cast<std::size_t>(sup.item)], sup.face, b.p, r)) <=
-               kRestGap * r + 1e-12;
-    };
-    // What the loop below does with one box: nothing when the ball rests on it, or when the
-    // centre is r or more from it.
+    // Nothing to do with a box when the ball rests on it, or when the centre is r or more
+    // from it.
     const auto clearOf = [&](int item) {
-        if (sup.item == item && rests())
+        if (sup.item == item && restsOnSupport(i))
             return true;
         const Box& box = layout_.boxes[static_cast<std::size_t>(item)];
         const Eigen::Vector3d local = box.toLocal(b.p);
@@ -344,27 +372,12 @@ bool Engine::settle(int i, long long& impacts)
     // meeting at an angle, the kerb beside the road): the sweep runs again while it pushed
     // with two boxes or more that close, three sweeps at most.
     bool changed = false;
-    Nearest near;
+    NearestBoxes near;
     for (int sweep = 0; sweep < kSettleSweeps; ++sweep) {
-        near = Nearest{};
-        int pushed = 0, close = 0;
-        for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
-            const Box& box = layout_.boxes[item];
-            const Eigen::Vector3d local = box.toLocal(b.p);
-            const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
-            Eigen::Vector3d away = local - closest;
-            double dist = away.norm();
-            near.add(item, dist);
-            if (!(dist < r * (1.0 - 1e-12)))
-                continue;
-            ++close;
-            if (sup.valid() && sup.item == item && rests())
-                continue; // resting on this box's face
-            pushOut(b, sup, item, local, away, dist, impacts);
-            ++pushed;
-        }
-        changed = changed || pushed > 0;
-        if (pushed == 0 || close < 2)
+        near = NearestBoxes{};
+        const SweepCount count = settleSweep(i, near, impacts);
+        changed = changed || count.pushed > 0;
+        if (count.pushed == 0 || count.close < 2)
             break;
     }
     // A push brought a box within r: no room until the next whole search.

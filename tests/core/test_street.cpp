@@ -55,6 +55,23 @@ State runFor(ab::Simulation& sim, State s, long long steps)
     return s;
 }
 
+// A run of `steps` steps under the health check: the last state, and the worst the check met.
+struct CheckedRun {
+    State end;
+    ab::diagnostics::HealthStatus worst;
+};
+CheckedRun runChecked(ab::Simulation& sim, State s, long long steps)
+{
+    State next;
+    ab::diagnostics::HealthCheck health(sim, s);
+    for (long long k = 0; k < steps; ++k) {
+        sim.step(s, next);
+        health.check(s, next);
+        std::swap(s, next);
+    }
+    return {s, health.worst()};
+}
+
 double radians(double degrees)
 {
     return degrees * std::numbers::pi / 180.0;
@@ -329,14 +346,9 @@ private slots:
         const double x = k * std::tan(0.5 * layout.slope), z = 0.5 * layout.width + 0.5 * layout.sidewalk;
         spec.init = oneBall(Vector3d(x, layout.roadY(0.0) + k + r + 0.05, z), Vector3d::Zero());
         auto sim = ab::makeSimulation(spec);
-        State s = sim->start(), next;
-        ab::diagnostics::HealthCheck health(*sim, s);
-        for (int step = 0; step < 180; ++step) {
-            sim->step(s, next);
-            QCOMPARE(health.check(s, next), ab::diagnostics::Health::Ok);
-            std::swap(s, next);
-        }
-        QVERIFY(s.p(1, 0) >= layout.roadY(0.0) + k); // on the sidewalk, not down in a notch
+        const CheckedRun run = runChecked(*sim, sim->start(), 180);
+        QVERIFY2(run.worst.level == ab::diagnostics::Health::Ok, run.worst.line().c_str());
+        QVERIFY(run.end.p(1, 0) >= layout.roadY(0.0) + k); // on the sidewalk, not down in a notch
     }
 
     void ballsLeaveTheRunAtTheOpenFoot()
@@ -392,15 +404,9 @@ private slots:
         RunSpec spec = streetSpec({"n=400", "blocks=1", "block_length=12"});
         const ab::street::Layout layout = ab::street::Layout::fromParams(spec.params);
         auto sim = ab::makeSimulation(spec);
-        State s = sim->start(), next;
-        ab::diagnostics::HealthCheck health(*sim, s);
-        for (int k = 0; k < 300; ++k) {
-            sim->step(s, next);
-            health.check(s, next);
-            std::swap(s, next);
-        }
-        QVERIFY2(health.worst().level == ab::diagnostics::Health::Ok, health.worst().line().c_str());
-        const ab::street::Census c = ab::street::census(layout, s);
+        const CheckedRun run = runChecked(*sim, sim->start(), 300);
+        QVERIFY2(run.worst.level == ab::diagnostics::Health::Ok, run.worst.line().c_str());
+        const ab::street::Census c = ab::street::census(layout, run.end);
         QCOMPARE_GT(c.left, 200);
         QCOMPARE(c.left + c.onStreet, 400);
     }
@@ -440,18 +446,12 @@ private slots:
     {
         RunSpec spec = streetSpec({"n=2000", "mu=0.5", "beta=0.2"});
         auto sim = ab::makeSimulation(spec);
-        State s = sim->start(), next;
-        ab::diagnostics::HealthCheck health(*sim, s);
         const ab::ConservationMeter meter(*sim);
-        const double e0 = meter.measure(s).energy.total();
-        for (int k = 0; k < 150; ++k) {
-            sim->step(s, next);
-            health.check(s, next);
-            std::swap(s, next);
-        }
-        QVERIFY2(health.worst().level == ab::diagnostics::Health::Ok, health.worst().line().c_str());
-        QVERIFY(meter.measure(s).energy.total() < e0);
-        QCOMPARE_GT(s.impacts, 100);
+        const double e0 = meter.measure(sim->start()).energy.total();
+        const CheckedRun run = runChecked(*sim, sim->start(), 150);
+        QVERIFY2(run.worst.level == ab::diagnostics::Health::Ok, run.worst.line().c_str());
+        QVERIFY(meter.measure(run.end).energy.total() < e0);
+        QCOMPARE_GT(run.end.impacts, 100);
     }
 
     void theStreetRefusesTheReportModelAndOtherIntegrators()
