@@ -32,4 +32,9 @@ inline std::string readFile(const std::filesystem::path& p)
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
+inline void writeFile(const std::filesystem::path& p, const std::string& text)
+{
+    std::ofstream(p, std::ios::binary) << text;
+}
+
 } // namespace testing
