@@ -35,7 +35,7 @@ std::string itemName(const street::Box& b)
 double depthInto(const street::Box& b, const Eigen::Vector3d& p, double r)
 {
     const Eigen::Vector3d local = b.toLocal(p);
-    const Eigen::Vector3d outside = (local.cwiseAbs() - b.half).cwiseMax(0.0);
+    const Eigen::Vector3d outside = b.outside(local);
     if (outside.squaredNorm() > 0.0)
         return r - outside.norm();
     return r + (b.half - local.cwiseAbs()).minCoeff();

@@ -105,7 +105,7 @@ NearestBoxes nextFace(const Layout& layout, std::span<const std::uint16_t> items
     for (std::uint16_t item : items) {
         const Box& box = layout.boxes[item];
         const Eigen::Vector3d lp = box.toLocal(p);
-        const double out2 = (lp.cwiseAbs() - box.half).cwiseMax(0.0).squaredNorm();
+        const double out2 = box.outside(lp).squaredNorm();
         nearest.add(item, out2);
         if (out2 > reach * reach)
             continue; // out of reach in this leg
@@ -333,8 +333,7 @@ Engine::SweepCount Engine::settleSweep(int i, NearestBoxes& near, long long& imp
     for (std::uint16_t item : layout_.itemsNear(b.p.x())) {
         const Box& box = layout_.boxes[item];
         const Eigen::Vector3d local = box.toLocal(b.p);
-        const Eigen::Vector3d closest = local.cwiseMax(-box.half).cwiseMin(box.half);
-        Eigen::Vector3d away = local - closest;
+        Eigen::Vector3d away = box.outside(local);
         double dist = away.norm();
         near.add(item, dist);
         if (!(dist < r * (1.0 - 1e-12)))
@@ -363,8 +362,7 @@ bool Engine::settle(int i, long long& impacts)
         if (sup.item == item && restsOnSupport(i))
             return true;
         const Box& box = layout_.boxes[static_cast<std::size_t>(item)];
-        const Eigen::Vector3d local = box.toLocal(b.p);
-        return !((local - local.cwiseMax(-box.half).cwiseMin(box.half)).norm() < r * (1.0 - 1e-12));
+        return !(box.outside(box.toLocal(b.p)).norm() < r * (1.0 - 1e-12));
     };
     if (room.room > 0.0 && (room.nearest < 0 || clearOf(room.nearest)))
         return false; // no box within r (point 2)

@@ -58,6 +58,9 @@ struct Box {
     {
         return {cosA * d.x() - sinA * d.y(), sinA * d.x() + cosA * d.y(), d.z()};
     }
+    // From the box's point nearest to `local` (a point in the box's frame) to that point: zero
+    // when it is inside the box; its norm is the point's distance from the box.
+    Eigen::Vector3d outside(const Eigen::Vector3d& local) const { return local - local.cwiseMax(-half).cwiseMin(half); }
 };
 
 // The region the balls start in: a rectangle of the road seen from above, [x0, x1] x [z0, z1],

@@ -336,6 +336,19 @@ private slots:
         }
     }
 
+    void aPointsDistanceFromATurnedBoxIsMeasuredInTheBoxsFrame()
+    {
+        // Box half extents (1, 2, 3) turned 30 degrees about z. A point at local (3, 0.5, -5) is
+        // beyond the edge x = 1, z = -3: its distance is |(2, 0, -2)| = sqrt(8); a point inside
+        // is at distance 0.
+        const ab::street::Box box(ab::street::ItemKind::Car, -1, Vector3d(4.0, -1.0, 2.0), std::numbers::pi / 6,
+                                  Vector3d(1.0, 2.0, 3.0));
+        const Vector3d beyond = box.outside(box.toLocal(box.toWorld(Vector3d(3.0, 0.5, -5.0))));
+        QVERIFY((beyond - Vector3d(2.0, 0.0, -2.0)).norm() <= 1e-12);
+        QVERIFY(std::abs(beyond.norm() - std::sqrt(8.0)) <= 1e-12);
+        QCOMPARE(box.outside(box.toLocal(box.toWorld(Vector3d(0.9, -1.9, 2.9)))).norm(), 0.0);
+    }
+
     void aBallDroppedOnTheSidewalksCreaseRestsOutsideBothBoxes()
     {
         // Dropped onto the sidewalk where the top crossing tips into block 1: it bounces,
