@@ -18,7 +18,6 @@
 
 namespace {
 
-using testing::builtin;
 using testing::cli;
 using testing::CliResult;
 using testing::presetDoc;
@@ -97,7 +96,7 @@ private slots:
     void reportPresetsAreExactlyTheReportsConstants()
     {
         for (const char* key : {"bounce1d-report", "box3d-report", "two-balls-report", "many-balls-report"}) {
-            const ab::Preset& p = builtin(key);
+            const ab::Preset p = ab::loadPreset(key);
             QVERIFY2(p.model == ab::ModelKind::Report && p.params.empty() && !p.dt && !p.steps && !p.integrator, key);
             ab::RunSpec spec(p.scene);
             spec.params.set("g", Eigen::Vector3d(1.0, 0, 0)); // stale values are reset
@@ -106,12 +105,12 @@ private slots:
             QVERIFY2(spec.params == ab::sceneInfo(p.scene).defaults(), key);
             QVERIFY2(!spec.dt, key);
         }
-        QCOMPARE(param(builtin("many-balls-200"), "n").x(), 200.0); // Figure 3.1
+        QCOMPARE(param(ab::loadPreset("many-balls-200"), "n").x(), 200.0); // Figure 3.1
     }
 
     void headOnPresetStopsTheMovingBall()
     {
-        const ab::Preset& p = builtin("two-balls-head-on");
+        const ab::Preset p = ab::loadPreset("two-balls-head-on");
         QCOMPARE(p.model, ab::ModelKind::Physical);
         const Eigen::Vector3d p1 = param(p, "p1"), v1 = param(p, "v1"), p2 = param(p, "p2"), v2 = param(p, "v2");
         QCOMPARE(param(p, "g").x(), 0.0);
@@ -126,7 +125,7 @@ private slots:
 
     void obliquePresetSendsTheBallsOffAtRightAngles()
     {
-        const ab::Preset& p = builtin("two-balls-oblique");
+        const ab::Preset p = ab::loadPreset("two-balls-oblique");
         const Eigen::Vector3d p1 = param(p, "p1"), v1 = param(p, "v1"), p2 = param(p, "p2"), v2 = param(p, "v2");
         const double r = param(p, "r").x();
         QCOMPARE(param(p, "g").x(), 0.0);
@@ -142,7 +141,7 @@ private slots:
 
     void zenoPresetRunsPastTheZenoTime()
     {
-        const ab::Preset& p = builtin("bounce1d-zeno-k09");
+        const ab::Preset p = ab::loadPreset("bounce1d-zeno-k09");
         QCOMPARE(p.integrator, std::optional(ab::Integrator::Event));
         const double k = param(p, "k").x(), g = param(p, "g").x(), h0 = param(p, "h0").x();
         QCOMPARE(k, 0.9);
@@ -157,7 +156,7 @@ private slots:
 
     void tunnellingPresetStepJumpsThirtyMetresPastTheWall()
     {
-        const ab::Preset& p = builtin("box3d-tunnelling");
+        const ab::Preset p = ab::loadPreset("box3d-tunnelling");
         QCOMPARE(p.impacts, std::optional(ab::ImpactMode::StepEnd));
         QCOMPARE(p.integrator, std::optional(ab::Integrator::Euler));
         const double dt = *p.dt, box = param(p, "box").x();
@@ -178,7 +177,7 @@ private slots:
         ab::RunSpec spec(ab::SceneId::Box3d);
         spec.params.set("k", Eigen::Vector3d(0.5, 0, 0));
         const ab::RunSpec before = spec;
-        const ab::Preset& other = builtin("two-balls-head-on");
+        const ab::Preset other = ab::loadPreset("two-balls-head-on");
         try {
             ab::applyPreset(other, spec);
             QFAIL("applied a two-balls preset to box3d");
@@ -186,7 +185,7 @@ private slots:
             QVERIFY2(std::string(e.what()).find("is for scene two-balls, not box3d") != std::string::npos, e.what());
         }
         // Valid values first, then a box too small for the start point: nothing is set.
-        ab::Preset bad = builtin("box3d-tunnelling");
+        ab::Preset bad = ab::loadPreset("box3d-tunnelling");
         bad.params = {{"k", {0.25, 0, 0}}, {"box", {1, 0, 0}}};
         QVERIFY_THROWS_EXCEPTION(ab::InputError, ab::applyPreset(bad, spec));
         QCOMPARE(spec.model, before.model);
@@ -199,14 +198,14 @@ private slots:
         ab::RunSpec spec(ab::SceneId::Box3d);
         spec.integrator = ab::Integrator::Verlet;
         spec.params.set("g", Eigen::Vector3d(1.0, 0, 0));
-        ab::applyPreset(builtin("box3d-tunnelling"), spec);
+        ab::applyPreset(ab::loadPreset("box3d-tunnelling"), spec);
         QCOMPARE(spec.model, ab::ModelKind::Physical);
         QCOMPARE(spec.integrator, ab::Integrator::Euler);
         QCOMPARE(spec.impacts, ab::ImpactMode::StepEnd);
         QCOMPARE(spec.dt, std::optional(0.25));
         QCOMPARE(spec.params.real("g"), 9.82); // not in the preset: the default again
         QVERIFY(spec.params.vector("v0") == Eigen::Vector3d(240, 0, 100));
-        ab::applyPreset(builtin("box3d-report"), spec);
+        ab::applyPreset(ab::loadPreset("box3d-report"), spec);
         QCOMPARE(spec.integrator, ab::RunSpec(ab::SceneId::Box3d).integrator);
         QCOMPARE(spec.impacts, ab::ImpactMode::Located);
         QVERIFY(!spec.dt);

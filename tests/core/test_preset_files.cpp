@@ -15,7 +15,6 @@
 
 namespace {
 
-using testing::builtin;
 using testing::readFile;
 using testing::writeFile;
 
@@ -86,7 +85,7 @@ private slots:
         QTemporaryDir dir;
         const std::filesystem::path path = dir.filePath("keep.json").toStdString();
         writeFile(path, "precious\n");
-        ab::Preset p = builtin("box3d-report");
+        ab::Preset p = ab::loadPreset("box3d-report");
         p.params = {{"k", {1.5, 0, 0}}};
         try {
             ab::savePreset(path, p);
@@ -212,7 +211,7 @@ private slots:
 
     void compareChoiceRoundTripsExactlyAndAnOldPresetHasNone()
     {
-        ab::Preset p = builtin("bounce1d-report");
+        ab::Preset p = ab::loadPreset("bounce1d-report");
         QVERIFY(!p.view.compare); // written before comparisons existed: still loads, with none
         for (const ab::RunVariant& v :
              {ab::RunVariant{ab::ModelKind::Report, ab::Integrator::SymplecticEuler, ab::ImpactMode::Located, {}},
@@ -222,7 +221,7 @@ private slots:
             QVERIFY(back == p);
             QVERIFY(back.view.compare == v);
         }
-        const ab::Preset& shipped = builtin("bounce1d-compare-report-physical");
+        const ab::Preset shipped = ab::loadPreset("bounce1d-compare-report-physical");
         QCOMPARE(shipped.model, ab::ModelKind::Report);
         QVERIFY(shipped.view.compare);
         QCOMPARE(shipped.view.compare->model, ab::ModelKind::Physical);

@@ -1,11 +1,7 @@
 // SPDX-License-Identifier: MIT
-// What the preset tests share: a minimal preset document to build bad files from, and the
-// built-in presets by key.
+// What the preset tests share: a minimal preset document to build bad files from.
 #pragma once
 
-#include "core/io/preset.h"
-
-#include <stdexcept>
 #include <string>
 
 namespace testing {
@@ -15,14 +11,6 @@ inline std::string presetDoc(const char* scene, const char* extra = "")
 {
     return std::string(R"({"format": "amazeballs-preset", "version": 1, "name": "t", "scene": ")") + scene +
            R"(", "model": "report")" + extra + "}";
-}
-
-inline const ab::Preset& builtin(const std::string& key)
-{
-    for (const ab::BuiltinPreset& b : ab::builtinPresets())
-        if (b.key == key)
-            return b.preset;
-    throw std::runtime_error("no built-in preset " + key);
 }
 
 } // namespace testing
