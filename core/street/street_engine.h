@@ -12,10 +12,10 @@
 //    closest point at the end of the flight. (b) Pairs of balls closer than 4 r (contact and a
 //    skin of 2 r) are found in a grid of columns over the street's plan and resolved in a fixed
 //    order, in passes until none overlaps by more than 1e-4 r (8 at most; up to 32 while a pile
-//    overlaps by more than 2e-3 r): impulse with
-//    restitution e and Walton's tangential impulse while they approach, then
-//    the overlap parted, half each, and the street met again; pairs apart that will touch
-//    within the next substep collide at once (speculative contacts; street_pairs.cpp).
+//    overlaps by more than 2e-3 r): impulse with restitution e and Walton's tangential impulse
+//    while they approach, then the overlap parted, half each and over-relaxed, and the street
+//    met again; pairs apart that will touch within the next substep collide at once
+//    (speculative contacts; street_pairs.cpp).
 //    (c) Balls beyond the open foot leave the run: they stay there at rest and cost nothing
 //    more.
 // 3. Threads share the flight and the pair search; the pairs are resolved on one thread in
@@ -135,7 +135,8 @@ private:
     PassResult resolvePairs(long long& impacts, double h, bool first);
     bool collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const;
     void markChanged(std::uint32_t i) { changed_[i] = pass_; }
-    // Parts two balls that overlap by `overlap` along n (a to b), half each (street_pairs.cpp).
+    // Parts two balls that overlap by `overlap` along n (a to b), half each, over-relaxed
+    // (street_pairs.cpp point 4).
     void part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap);
     void retire();
     int substepsFor(double dt) const;

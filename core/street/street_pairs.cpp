@@ -15,15 +15,25 @@
 //    depend on the threads; the exact distance then keeps only the near ones.
 // 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
 //    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most, up to 32 while a
-//    deep pile overlaps by more than 2e-3 r): eqs 2.4-2.7 along
-//    the line of centres with restitution e, Walton's impulse between rough balls
-//    (pair_friction.h), the overlap parted half each; a ball moved then meets the street
-//    again (settle). Every pass also takes the pairs that will meet within the next substep
+//    deep pile overlaps by more than 2e-3 r): eqs 2.4-2.7 along the line of centres with
+//    restitution e, Walton's impulse between rough balls (pair_friction.h), the overlap
+//    parted half each, over-relaxed (point 4); a ball moved then meets the street again
+//    (settle). Every pass also takes the pairs that will meet within the next substep
 //    (speculative contacts). Approaches slower than 1e-10 of the scene's speeds and overlaps
 //    below 1e-9 r are round-off and left alone, so a pair a pass resolved does nothing in the
 //    next unless a ball of it changed since: each pass after the first visits only the pairs
 //    with a ball changed by the pass before or by this one (a ball keeps the number of the
 //    last pass that changed it), and the rest of a pile costs nothing more.
+// 4. A pair is parted by 1.8 times its overlap, not exactly to touching (successive
+//    over-relaxation of the passes). In a pile several balls deep, a pass that parts a pair to
+//    touching has the next pair, or the street, push one of its balls back, so the passes put
+//    a pile right layer by layer; parting past touching, by a gap of 0.8 times the overlap it
+//    had, hands each pair's correction on faster. Over-relaxed Gauss-Seidel converges for
+//    factors between 0 and 2 (projected SOR, Cryer 1971). The pair's centre of mass, and so
+//    its momentum and potential energy, are kept as before; the gap closes under the next
+//    substep's gravity. On a street 3 m wide holding 40,000 balls (a pile as deep as the
+//    advert's) the first 6 s visit 0.42 times the pairs that parting to touching visits, with
+//    the health check as clean (docs/performance.md).
 #include "street_engine.h"
 
 #include "../physical/pair_friction.h"
@@ -44,6 +54,7 @@ constexpr int kPairChunk = 2048; // active balls a worker searches at a time
 // did not touch after the flight still finds that pair in the list, and so does a pair that
 // will touch within the next substep (two balls close by at most 2 r in one).
 constexpr double kSkin = 2.0;
+constexpr double kOverRelax = 1.8; // point 4
 
 } // namespace
 
@@ -271,8 +282,10 @@ Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first
 
 void Engine::part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap)
 {
-    // Half each along n: the pair's centre of mass (and its potential energy) kept.
-    for (const auto& [i, by] : {std::pair{a, -0.5 * overlap}, std::pair{b, 0.5 * overlap}}) {
+    // Half each along n, over-relaxed (point 4): the pair ends (kOverRelax - 1) overlap apart,
+    // its centre of mass (and its potential energy) kept.
+    const double share = 0.5 * kOverRelax * overlap;
+    for (const auto& [i, by] : {std::pair{a, -share}, std::pair{b, share}}) {
         balls_[i].p += by * n;
         room_[i].room -= std::abs(by); // n is a unit vector
         markChanged(i);
