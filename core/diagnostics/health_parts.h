@@ -179,7 +179,8 @@ struct HealthCheck::Impl {
 
     void checkPair(const State& b, const State& a, int i, int j);
 
-    // Only gravity changed the ball's velocity in the step: no wall, no other ball.
+    // Only gravity acted on the ball in the step: its velocity and its centre moved as a
+    // projectile's (no wall, no other ball, no contact pass moving its centre).
     bool freeFlight(const State& b, const State& a, int i) const;
 
     // Momentum of a two-ball contact: away from the walls only gravity changes it.

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The health check on hand-worked steps: the report's stage-1 energy gain of g^2 dt^2 / 2
 // per flight step, a late impact against an escape, the stage-3 swap losing 1 - e of the
-// momentum and repeating, balls passing through each other, the spring's compression,
+// momentum and repeating, balls passing through or grazing each other (and a street ball a
+// contact pass moved, which did not fly free), the spring's compression,
 // the stage-4 failures of the report's own rules, and the angular momentum of a rough ball
 // about its contact point at the floor.
 #include "core/diagnostics/health.h"
+#include "core/street/street_layout.h"
 #include "support/sim_helpers.h"
 
 #include <QtTest>
@@ -190,6 +192,47 @@ private slots:
         QCOMPARE(c.health->worst().level, Health::Warning);
         QVERIFY(mentions(*c.health, "grazed within one step"));
         QVERIFY(!mentions(*c.health, "passed through each other"));
+    }
+
+    void twoProjectilesGrazingOnTheStreetWarnButABallAContactPassMovedDoesNot()
+    {
+        // Two balls 2 m above the road fly across it towards each other at 12 m/s, 2 r - 0.01 r
+        // apart along the street, from 0.2 m apart across it to 0.2 m past: the straight path
+        // between their step ends comes 0.01 r inside contact. Both follow the exact projectile
+        // x1 = x0 + v0 dt - g dt^2 / 2 e_y, v1 = v0 - g dt e_y, so the step missed a graze.
+        RunSpec spec = testing::spec(SceneId::Street, {"n=2"}, ModelKind::Physical);
+        const double dt = 1.0 / 60.0; // the scene's step
+        spec.dt = dt;
+        const street::Layout layout = street::Layout::fromParams(spec.params);
+        const double r = 0.03, g = spec.params.real("g");
+        const double x = 20.0, y = layout.roadY(x) + 2.0;
+        State before;
+        before.resize(2);
+        before.w.setZero(3, 2);
+        before.p.col(0) = Eigen::Vector3d(x, y, -0.1);
+        before.p.col(1) = Eigen::Vector3d(x + 1.99 * r, y, 0.1);
+        before.v.col(0) = Eigen::Vector3d(0.0, 0.0, 12.0);
+        before.v.col(1) = Eigen::Vector3d(0.0, 0.0, -12.0);
+        State after = before;
+        after.t = dt;
+        for (int i = 0; i < 2; ++i) {
+            after.v.col(i) = before.v.col(i) - Eigen::Vector3d(0.0, g * dt, 0.0);
+            after.p.col(i) = before.p.col(i) + before.v.col(i) * dt - Eigen::Vector3d(0.0, 0.5 * g * dt * dt, 0.0);
+        }
+        auto sim = makeSimulation(spec);
+        HealthCheck grazed(*sim, before);
+        grazed.check(before, after);
+        QCOMPARE(grazed.worst().level, Health::Warning);
+        QVERIFY(mentions(grazed, "grazed within one step"));
+
+        // The same step, but a contact pass parted ball 0 from a third ball by 1 mm downwards,
+        // its velocity untouched (street_pairs.cpp point 4): it touched a ball, its path was not
+        // the straight one, and nothing about a graze follows from its step ends.
+        after.p(1, 0) -= 1e-3;
+        HealthCheck parted(*sim, before);
+        parted.check(before, after);
+        QVERIFY2(!mentions(parted, "grazed"), parted.worst().line().c_str());
+        QCOMPARE(parted.worst().level, Health::Ok);
     }
 
     void springCompressionIsTheClosedForm()
