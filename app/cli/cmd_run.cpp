@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "interrupt.h"
+#include "run_progress.h"
 #include "run_setup.h"
 
 #include "../../core/diagnostics/health.h"
@@ -26,6 +27,8 @@ struct Summary {
     double haltT = -1.0;
     double maxSpeed = 0.0;
     long long contacts = 0;
+    long long impacts = 0; // the many-balls engines' and the street's, each contact once
+    bool perBall = false;  // the contacts are stage 4's counters, one per ball
 
     void observe(const State& s, long long index)
     {
@@ -36,12 +39,14 @@ struct Summary {
                 sum += b;
             return sum;
         }();
-        if (counted > 0 && firstContactIndex < 0) {
+        perBall = perBall || (counted > s.count);
+        if ((counted > 0 || s.impacts > 0) && firstContactIndex < 0) {
             firstContactIndex = index;
             firstContactT = previousT; // the step from the previous state counted it
         }
         previousT = s.t;
         contacts = std::max(contacts, counted);
+        impacts = std::max(impacts, s.impacts);
         if (s.halted && haltT < 0.0)
             haltT = s.t;
         if (s.size() > 0)
@@ -60,7 +65,13 @@ struct Summary {
         if (firstContactIndex >= 0)
             out << "first contact: in the step from t = " << formatNumber(firstContactT) << " " << info.timeUnit
                 << "\n";
-        out << "contacts counted: " << contacts << "\n";
+        // The report's counters (a scene's `count`, stage 4's bounces per ball); the engines
+        // that count impacts instead (many-balls' physical model, the street) say so.
+        if (contacts > 0 || impacts == 0)
+            out << "contacts counted: " << contacts << (perBall ? " (the balls' bounce counters, summed)" : "") << "\n";
+        if (impacts > 0)
+            out << "impacts: " << impacts << " (ball on ball and on "
+                << (spec.scene == SceneId::Street ? "the street" : "the walls") << ", each contact once)\n";
         if (haltT >= 0.0)
             out << "the report's bounce limit stopped the motion at t = " << formatNumber(haltT) << " " << info.timeUnit
                 << "\n";
@@ -110,6 +121,10 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
     diagnostics::HealthCheck health(*sim, start);
     const bool spin = physical::hasRotation(*sim, start); // wx,wy,wz after the contract's columns
     bool diverged = false;
+    const double tEnd = start.t + static_cast<double>(setup.steps) * sim->dt();
+    const bool csvOnTerminal = !outPath && !summary && RunProgress::isTerminal(out); // rows show it going
+    RunProgress progress(err, !args.flag("quiet") && !csvOnTerminal && RunProgress::isTerminal(err),
+                         sim->scene().timeUnit);
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
         if (csv && meta) // `#` lines before the contract's header, only when asked for
@@ -129,6 +144,7 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
                     writeTrajectoryRows(*csv, s, spin);
                 sum.observe(s, index);
                 last = s;
+                progress.update(index, setup.steps, s.t, tEnd);
                 ++index;
             },
             [&] { return diverged || interrupted(); });
@@ -138,6 +154,7 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
         writeFileAtomically(*outPath, [&](std::ostream& file) { simulate(&file); });
     else
         simulate(summary ? nullptr : &out);
+    progress.end(); // before the summary and the health check's line
     if (summary)
         sum.print(out, *sim, last);
     return reportHealth(health, diverged, last, *sim, err);

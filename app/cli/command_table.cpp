@@ -75,6 +75,7 @@ CommandSpec runCommandSpec()
                       false, V::File},
                      {"summary", "", "print a few readable lines instead of the CSV"},
                      {"meta", "", "begin the CSV with # lines naming the program, settings and constants"},
+                     {"quiet", "", "no progress on standard error (shown only on a terminal, from 2 s on)"},
                  }),
             runCommand};
 }

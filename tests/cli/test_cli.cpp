@@ -4,6 +4,8 @@
 #include "support/cli_runner.h"
 #include "support/report_listings.h"
 
+#include "core/simulation.h"
+
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -122,6 +124,30 @@ private slots:
         }
         QCOMPARE(rows, 100);                    // the start and t = 0.5 s, 50 balls each
         QVERIFY2(r.err.empty(), r.err.c_str()); // healthy
+    }
+
+    // --summary counts the street's impacts as its engine does (the street keeps no report
+    // counters: it said "contacts counted: 0" while 300 balls landed on the road).
+    void summaryCountsTheStreetsImpactsAsItsEngineDoes()
+    {
+        const Result r = cli({"run", "street", "--set", "n=300", "--steps", "60", "--summary"});
+        QCOMPARE(r.status, 0);
+        long long printed = -1;
+        const std::size_t at = r.out.find("\nimpacts: ");
+        QVERIFY2(at != std::string::npos, r.out.c_str());
+        QCOMPARE(std::sscanf(r.out.c_str() + at, "\nimpacts: %lld (ball on ball and on the street", &printed), 1);
+        QVERIFY2(r.out.find("contacts counted") == std::string::npos, r.out.c_str());
+
+        ab::RunSpec spec(ab::SceneId::Street);
+        spec.params.parseAssignment("n=300");
+        auto sim = ab::makeSimulation(spec);
+        ab::State s = sim->start(), next;
+        for (int k = 0; k < 60; ++k) {
+            sim->step(s, next);
+            std::swap(s, next);
+        }
+        QVERIFY(s.impacts > 300); // every ball landed on the road at least once
+        QCOMPARE(printed, s.impacts);
     }
 
     void everyKeepsEveryKthStateAndTEndSetsTheLength()
