@@ -123,7 +123,7 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
     bool diverged = false;
     const double tEnd = start.t + static_cast<double>(setup.steps) * sim->dt();
     const bool csvOnTerminal = !outPath && !summary && RunProgress::isTerminal(out); // rows show it going
-    RunProgress progress(err, !args.flag("quiet") && !csvOnTerminal && RunProgress::isTerminal(err),
+    RunProgress progress(err, !args.flag("quiet") && !csvOnTerminal && RunProgress::isTerminal(err), setup.steps, tEnd,
                          sim->scene().timeUnit);
     auto simulate = [&](std::ostream* csv) {
         long long index = 0;
@@ -144,7 +144,7 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
                     writeTrajectoryRows(*csv, s, spin);
                 sum.observe(s, index);
                 last = s;
-                progress.update(index, setup.steps, s.t, tEnd);
+                progress.update(index, s.t);
                 ++index;
             },
             [&] { return diverged || interrupted(); });

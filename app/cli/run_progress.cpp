@@ -9,8 +9,9 @@
 
 namespace ab::cli {
 
-RunProgress::RunProgress(std::ostream& err, bool shown, std::string timeUnit, Clock clock)
-    : err_(err), shown_(shown), unit_(std::move(timeUnit)), clock_(std::move(clock)), start_(clock_())
+RunProgress::RunProgress(std::ostream& err, bool shown, long long total, double tEnd, std::string timeUnit, Clock clock)
+    : err_(err), shown_(shown && total > 0), total_(total),
+      end_("of " + formatSignificant(tEnd, 4) + " " + std::move(timeUnit)), clock_(std::move(clock)), start_(clock_())
 {
 }
 
@@ -42,9 +43,9 @@ std::string RunProgress::clockTime(double seconds)
     return std::to_string(s / 60) + ":" + two(s % 60);
 }
 
-void RunProgress::update(long long done, long long total, double t, double tEnd)
+void RunProgress::update(long long done, double t)
 {
-    if (!shown_ || done <= 0 || total <= 0)
+    if (!shown_ || done <= 0)
         return;
     const double now = clock_(), elapsed = now - start_;
     if (elapsed < kFirstAfter || (lastWrite_ >= 0.0 && now - lastWrite_ < kEvery))
@@ -52,10 +53,10 @@ void RunProgress::update(long long done, long long total, double t, double tEnd)
     lastWrite_ = now;
     // The time left at the pace so far: elapsed (total - done) / done. A street run's steps
     // cost most while its pile settles, so the figure is a guide, not a promise.
-    const double left = elapsed * static_cast<double>(total - done) / static_cast<double>(done);
-    const int percent = static_cast<int>(100 * done / total);
-    std::string line = "run: t = " + formatSignificant(t, 4) + " of " + formatSignificant(tEnd, 4) + " " + unit_ +
-                       " (" + std::to_string(percent) + "%), about " + clockTime(left) + " left";
+    const double left = elapsed * static_cast<double>(total_ - done) / static_cast<double>(done);
+    const int percent = static_cast<int>(100 * done / total_);
+    std::string line = "run: t = " + formatSignificant(t, 4) + " " + end_ + " (" + std::to_string(percent) +
+                       "%), about " + clockTime(left) + " left";
     const std::size_t width = line.size();
     if (width < width_)
         line.append(width_ - width, ' '); // over the end of a longer line before

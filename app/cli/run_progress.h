@@ -22,13 +22,15 @@ public:
     static constexpr double kFirstAfter = 2.0; // s of wall time before the line appears
     static constexpr double kEvery = 0.5;      // s between two rewrites
 
-    RunProgress(std::ostream& err, bool shown, std::string timeUnit, Clock clock = steadySeconds);
+    // A run of `total` steps to scene time `tEnd`, in `timeUnit`.
+    RunProgress(std::ostream& err, bool shown, long long total, double tEnd, std::string timeUnit,
+                Clock clock = steadySeconds);
     ~RunProgress();
     RunProgress(const RunProgress&) = delete;
     RunProgress& operator=(const RunProgress&) = delete;
 
-    // `done` of `total` steps taken, the state reached at scene time `t` of `tEnd`.
-    void update(long long done, long long total, double t, double tEnd);
+    // `done` steps taken, the state reached at scene time `t`.
+    void update(long long done, double t);
     // Wipes the line (if one was written), so that what follows starts on a clean line.
     void end();
 
@@ -42,7 +44,8 @@ private:
 
     std::ostream& err_;
     bool shown_;
-    std::string unit_;
+    long long total_;
+    std::string end_; // "of 9 s"
     Clock clock_;
     double start_;
     double lastWrite_ = -1.0;

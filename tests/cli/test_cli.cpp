@@ -4,7 +4,7 @@
 #include "support/cli_runner.h"
 #include "support/report_listings.h"
 
-#include "core/simulation.h"
+#include "support/sim_helpers.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -138,14 +138,8 @@ private slots:
         QCOMPARE(std::sscanf(r.out.c_str() + at, "\nimpacts: %lld (ball on ball and on the street", &printed), 1);
         QVERIFY2(r.out.find("contacts counted") == std::string::npos, r.out.c_str());
 
-        ab::RunSpec spec(ab::SceneId::Street);
-        spec.params.parseAssignment("n=300");
-        auto sim = ab::makeSimulation(spec);
-        ab::State s = sim->start(), next;
-        for (int k = 0; k < 60; ++k) {
-            sim->step(s, next);
-            std::swap(s, next);
-        }
+        const ab::State s =
+            testing::record(testing::spec(ab::SceneId::Street, {"n=300"}, ab::ModelKind::Physical), 60).back();
         QVERIFY(s.impacts > 300); // every ball landed on the road at least once
         QCOMPARE(printed, s.impacts);
     }

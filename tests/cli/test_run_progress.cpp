@@ -11,58 +11,69 @@
 
 using ab::cli::RunProgress;
 
+namespace {
+
+// A progress line of `total` steps to `tEnd` seconds, written to a string on a clock the test
+// moves by setting `now`.
+struct Watched {
+    std::ostringstream err;
+    double now = 0.0;
+    RunProgress line;
+
+    Watched(long long total, double tEnd, bool shown = true)
+        : line(err, shown, total, tEnd, "s", [this] { return now; })
+    {
+    }
+};
+
+} // namespace
+
 class RunProgressLine : public QObject {
     Q_OBJECT
 
 private slots:
     void nothingIsWrittenInTheFirstTwoSeconds()
     {
-        std::ostringstream err;
-        double now = 100.0;
-        RunProgress p(err, true, "s", [&] { return now; });
-        now = 101.9;
-        p.update(50, 100, 4.5, 9.0);
-        p.end();
-        QCOMPARE(err.str(), std::string());
+        Watched w(100, 9.0);
+        w.now = 1.9;
+        w.line.update(50, 4.5);
+        w.line.end();
+        QCOMPARE(w.err.str(), std::string());
     }
 
     void theLineGivesTheSceneTimeTheShareAndTheTimeLeftAtThePaceSoFar()
     {
         // 2 s for 135 of 540 steps: 2 x 405 / 135 = 6 s left.
-        std::ostringstream err;
-        double now = 0.0;
-        RunProgress p(err, true, "s", [&] { return now; });
-        now = 2.0;
-        p.update(135, 540, 2.25, 9.0);
-        QCOMPARE(err.str(), std::string("\rrun: t = 2.25 of 9 s (25%), about 0:06 left"));
+        Watched w(540, 9.0);
+        w.now = 2.0;
+        w.line.update(135, 2.25);
+        QCOMPARE(w.err.str(), std::string("\rrun: t = 2.25 of 9 s (25%), about 0:06 left"));
     }
 
     void theLineIsRewrittenAtMostTwiceASecondAndAShorterOneCoversTheLonger()
     {
-        std::ostringstream err;
-        double now = 0.0;
-        RunProgress p(err, true, "s", [&] { return now; });
-        now = 3.0;
-        p.update(1, 1000, 0.01, 16.0); // 3 x 999 = 2997 s left: 49:57
+        Watched w(1000, 16.0);
+        w.now = 3.0;
+        w.line.update(1, 0.01); // 3 x 999 = 2997 s left: 49:57
         const std::string first = "\rrun: t = 0.01 of 16 s (0%), about 49:57 left";
-        QCOMPARE(err.str(), first);
-        now = 3.4; // within half a second: nothing
-        p.update(2, 1000, 0.02, 16.0);
-        QCOMPARE(err.str(), first);
-        now = 3.5; // 3.5 x 100 / 900 = 0.39 s, shown as a whole second
-        p.update(900, 1000, 14.4, 16.0);
+        QCOMPARE(w.err.str(), first);
+        w.now = 3.4; // within half a second: nothing
+        w.line.update(2, 0.02);
+        QCOMPARE(w.err.str(), first);
+        w.now = 3.5; // 3.5 x 100 / 900 = 0.39 s, shown as a whole second
+        w.line.update(900, 14.4);
         const std::string second = "run: t = 14.4 of 16 s (90%), about 0:01 left";
-        QCOMPARE(err.str(), first + "\r" + second + std::string(first.size() - 1 - second.size(), ' '));
+        QCOMPARE(w.err.str(), first + "\r" + second + std::string(first.size() - 1 - second.size(), ' '));
     }
 
     void theEndWipesTheLine()
     {
         std::ostringstream err;
-        double now = 0.0;
         {
-            RunProgress p(err, true, "s", [&] { return now; });
+            double now = 0.0;
+            RunProgress p(err, true, 20, 2.0, "s", [&] { return now; });
             now = 2.5;
-            p.update(10, 20, 1.0, 2.0);
+            p.update(10, 1.0);
         } // a run that ends by an exception wipes the line as well
         const std::string line = "run: t = 1 of 2 s (50%), about 0:03 left";
         QCOMPARE(err.str(), "\r" + line + "\r" + std::string(line.size(), ' ') + "\r");
@@ -70,14 +81,12 @@ private slots:
 
     void nothingIsWrittenWhereItIsNotShown()
     {
-        std::ostringstream err;
-        double now = 0.0;
-        RunProgress p(err, false, "s", [&] { return now; });
-        now = 10.0;
-        p.update(10, 20, 1.0, 2.0);
-        p.end();
-        QCOMPARE(err.str(), std::string());
-        QVERIFY(!RunProgress::isTerminal(err)); // a string stream is no terminal
+        Watched w(20, 2.0, false);
+        w.now = 10.0;
+        w.line.update(10, 1.0);
+        w.line.end();
+        QCOMPARE(w.err.str(), std::string());
+        QVERIFY(!RunProgress::isTerminal(w.err)); // a string stream is no terminal
     }
 
     void timesLeftReadAsAClock()
