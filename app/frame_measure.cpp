@@ -23,7 +23,8 @@ namespace ab::app {
 namespace {
 
 // CPU seconds used so far by this process's threads other than the stepping thread
-// ("ab-stepper"): the window's own thread and the software renderer's. Linux only.
+// ("ab-stepper") and its helpers ("ab-worker", --threads): the window's own thread and the
+// software renderer's. Linux only.
 double drawingCpuSeconds()
 {
     double ticks = 0.0;
@@ -34,7 +35,8 @@ double drawingCpuSeconds()
             continue;
         const QString line = QString::fromLatin1(stat.readAll());
         const int open = line.indexOf('('), close = line.lastIndexOf(')');
-        if (line.mid(open + 1, close - open - 1) == QLatin1String("ab-stepper"))
+        const QString name = line.mid(open + 1, close - open - 1);
+        if (name == QLatin1String("ab-stepper") || name == QLatin1String("ab-worker"))
             continue;
         const QStringList fields = line.mid(close + 2).split(' ');
         if (fields.size() > 12)
@@ -110,14 +112,15 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
         for (std::size_t k = 0; k < std::min<std::size_t>(3, playing.size()); ++k)
             longest += (k ? ", " : "") + ms(playing[k].interval) + " ms at " + ms(playing[k].at - firstAt, 2) + " s";
         const auto st = window.controller().status();
-        const std::string line = "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) +
-                                 " p95 " + pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " +
-                                 pct(interval, 0.5) + " p95 " + pct(interval, 0.95) + " max " + pct(interval, 1.0) +
-                                 "; drawing CPU per frame " + ms(frames ? 1e3 * cpu / double(frames) : 0.0) +
-                                 " ms; simulation: " + std::to_string(st.steps) + " steps, step " +
-                                 ms(st.stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " +
-                                 ms(startUp) + " s of frames): " + std::to_string(first.size()) + " frames, longest " +
-                                 ms(firstLongest) + " ms\n";
+        const int threads = window.controller().spec().threads;
+        const std::string line =
+            "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) + " p95 " +
+            pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " + pct(interval, 0.5) + " p95 " +
+            pct(interval, 0.95) + " max " + pct(interval, 1.0) + "; drawing CPU per frame " +
+            ms(frames ? 1e3 * cpu / double(frames) : 0.0) + " ms; simulation: " + std::to_string(st.steps) +
+            " steps on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads") + ", step " +
+            ms(st.stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " + ms(startUp) +
+            " s of frames): " + std::to_string(first.size()) + " frames, longest " + ms(firstLongest) + " ms\n";
         std::fputs(line.c_str(), stdout);
         delete samples;
         delete clock;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // amazeballs: the window.
 // `amazeballs [FILE.json] [--preset NAME|FILE] [--scene KEY] [--set NAME=VALUE]... [--speed X]
-//  [--play] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]
+//  [--play] [--threads N] [--measure-frames S] [--fresh] [--lecture] [--theme KEY]
 //  [--compare MODEL[:INTEGRATOR[:IMPACTS]]]`.
 #include "cli/suggest.h"
 #include "frame_measure.h"
@@ -115,6 +115,7 @@ struct Options {
     QStringList sets;
     std::optional<ab::RunVariant> compare;
     std::optional<double> speed, measureSeconds;
+    std::optional<int> threads;
     std::optional<ab::ui::Theme> theme;
     bool play = false, fresh = false, lecture = false;
 };
@@ -245,6 +246,14 @@ std::optional<int> readOptions(const QStringList& arguments, Options& o)
                                          .arg(QString::fromStdString(ab::formatNumber(*o.speed)))
                                          .toStdString());
         }
+        if (parser.isSet(QStringLiteral("threads"))) {
+            const long long threads =
+                ab::parseInteger(parser.value(QStringLiteral("threads")).toStdString(), "--threads");
+            if (threads < 1 || threads > 256)
+                throw ab::InputError(
+                    QApplication::translate("main", "--threads: %1 is outside [1, 256]").arg(threads).toStdString());
+            o.threads = static_cast<int>(threads);
+        }
         if (parser.isSet(QStringLiteral("measure-frames"))) {
             // Bounded: a measurement is at most an hour (a timer counts int milliseconds).
             o.measureSeconds =
@@ -347,6 +356,8 @@ int main(int argc, char** argv)
     QApplication::setWindowIcon(QIcon(":/icons/amazeballs.svg"));
     ab::ui::installLanguage(ab::ui::languageForLocale(QLocale::system())); // the Language menu changes it
 
+    if (options.threads) // before the first run is built
+        ab::ui::RunController::setEngineThreads(*options.threads);
     ab::ui::WindowShell shell;
     ab::ui::MainWindow& window = shell.window(); // replaced by a language switch: use only before it
     QSettings store;

@@ -30,6 +30,9 @@ inline const std::vector<WindowOption>& windowOptions()
         {"set", "NAME=VALUE", QT_TRANSLATE_NOOP("main", "Set a constant, NAME=VALUE."), cli::Values::Assignment},
         {"play", "", QT_TRANSLATE_NOOP("main", "Start playing.")},
         {"speed", "X", QT_TRANSLATE_NOOP("main", "Play at X times real time (0.1 to 10).")},
+        {"threads", "N",
+         QT_TRANSLATE_NOOP("main", "Step the physical model's many balls on N threads (1 to 256; by default one "
+                                   "fewer than the processor's cores, at most 8).")},
         {"measure-frames", "S", QT_TRANSLATE_NOOP("main", "Play for S seconds, print frame times, quit.")},
         {"preset", "NAME|FILE", QT_TRANSLATE_NOOP("main", "Open a built-in preset by NAME, or a preset FILE."),
          cli::Values::Preset},

@@ -22,6 +22,9 @@
 #include <thread>
 #include <type_traits>
 #include <vector>
+#ifdef __linux__
+#include <pthread.h>
+#endif
 
 namespace ab::physical {
 
@@ -30,7 +33,12 @@ public:
     explicit WorkerPool(int workers) : runs_(static_cast<std::size_t>(std::max(workers, 1)))
     {
         for (int w = 1; w < workers; ++w)
-            threads_.emplace_back([this, w] { serve(w); });
+            threads_.emplace_back([this, w] {
+#ifdef __linux__
+                pthread_setname_np(pthread_self(), "ab-worker"); // named for profilers and frame timing
+#endif
+                serve(w);
+            });
     }
     ~WorkerPool()
     {
@@ -43,7 +51,10 @@ public:
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
-    int size() const { return static_cast<int>(threads_.size()) + 1; }
+    int size() const
+    {
+        return static_cast<int>(threads_.size()) + 1;
+    }
 
     template <typename F> void forEach(int count, F&& f)
     {

@@ -393,6 +393,9 @@ void addWindowCases(std::vector<Case>& c)
     window("--measure-frames beyond its bound", {"--measure-frames", "3000000"}, 2, 1, "[1, 3600]");
     window("--measure-frames not a number", {"--measure-frames", "abc"}, 2, 1, "not a number");
     window("--measure-frames infinite", {"--measure-frames", "inf"}, 2, 1, "finite");
+    window("--threads zero", {"--threads", "0"}, 2, 1, "--threads: 0 is outside [1, 256]");
+    window("--threads beyond its bound", {"--threads", "257"}, 2, 1, "[1, 256]");
+    window("--threads not a whole number", {"--threads", "2.5"}, 2, 1, "--threads");
     window("a missing preset", {"none.json"}, 2, 1, "no such file");
     window("a FIFO preset", {"p.json"}, 2, 1, "FIFO", [](const fs::path& d) { fifo(d / "p.json"); });
     window("a bad --set", {"--scene", "bounce1d", "--set", "g=abc"}, 2, 1, "not a number");

@@ -165,6 +165,38 @@ private slots:
         expectTrackIsAFreshRun(engine, spec, 30);
     }
 
+    void theWindowsStreetOnThreeThreadsIsTheOneThreadRunBitForBit()
+    {
+        // 3000 balls: three flight chunks and two pair-search chunks, so that the three
+        // threads share each phase. 40 steps take the hopper's balls into contact.
+        QVERIFY(ab::ui::RunController::defaultEngineThreads() >= 1);
+        QVERIFY(ab::ui::RunController::defaultEngineThreads() <= 8);
+        ab::ui::RunController::setEngineThreads(3);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, ab::ui::RunController::setEngineThreads(0));
+        QCOMPARE(ab::ui::RunController::engineThreads(), 3); // a refused count changes nothing
+        ab::RunSpec spec = testing::spec(SceneId::Street, {"n=3000"}, ab::ModelKind::Physical);
+        ab::ui::RunController controller;
+        controller.setRun(spec, 1000);
+        QCOMPARE(controller.spec().threads, 3);
+        QCOMPARE(controller.engine().simulation().spec().threads, 3);
+        ab::ui::RunEngine& engine = const_cast<ab::ui::RunEngine&>(controller.engine());
+        constexpr long long steps = 40;
+        stepTo(engine, steps);
+        QCOMPARE(spec.threads, 1);
+        expectTrackIsAFreshRun(engine, spec, steps - 1);
+        const ab::State fresh = testing::record(spec, steps).back();
+        QVERIFY(fresh.impacts > 0); // the balls have met by then: the threads share contact passes
+        engine.read([&](const ab::ui::Recording&, const ab::ui::Frame& current) {
+            QCOMPARE(current.step, steps);
+            long long differing = 0;
+            for (int i = 0; i < fresh.size(); ++i)
+                for (int a = 0; a < 3; ++a)
+                    differing += current.p[std::size_t(3 * i + a)] != float(fresh.p(a, i));
+            QCOMPARE(differing, 0LL);
+        });
+        ab::ui::RunController::setEngineThreads(1);
+    }
+
     void pressingStepWhileLookingBackForksAtTheMomentShown()
     {
         ab::ui::MainWindow w;

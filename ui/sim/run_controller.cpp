@@ -4,8 +4,11 @@
 #include "playback_rate.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <thread>
 
 namespace ab::ui {
 
@@ -45,7 +48,28 @@ std::unique_ptr<Simulation> makeComparison(const RunSpec& main, const Simulation
     return sim;
 }
 
+std::atomic<int> engineThreadCount{0}; // 0: defaultEngineThreads()
+
 } // namespace
+
+int RunController::defaultEngineThreads()
+{
+    const int cores = static_cast<int>(std::thread::hardware_concurrency()); // 0 where unknown
+    return std::clamp(cores - 1, 1, 8);
+}
+
+int RunController::engineThreads()
+{
+    const int set = engineThreadCount.load(std::memory_order_relaxed);
+    return set > 0 ? set : defaultEngineThreads();
+}
+
+void RunController::setEngineThreads(int threads)
+{
+    if (threads < 1 || threads > 256)
+        throw std::invalid_argument("RunController::setEngineThreads: outside [1, 256]");
+    engineThreadCount.store(threads, std::memory_order_relaxed);
+}
 
 RunController::~RunController()
 {
@@ -85,8 +109,10 @@ double RunController::plannedEnd() const
     return sim.start().t + sim.dt() * static_cast<double>(std::max<long long>(steps_, 1));
 }
 
-void RunController::setRun(const RunSpec& spec, long long steps, const std::optional<RunVariant>& compare)
+void RunController::setRun(const RunSpec& asked, long long steps, const std::optional<RunVariant>& compare)
 {
+    RunSpec spec = asked;
+    spec.threads = engineThreads();                         // the pace only: the balls are the same for any count
     std::unique_ptr<Simulation> sim = makeSimulation(spec); // throws InputError: nothing changes
     std::unique_ptr<Simulation> other = compare ? makeComparison(spec, *sim, *compare) : nullptr;
     spec_ = std::make_unique<RunSpec>(spec);
