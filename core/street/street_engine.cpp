@@ -167,13 +167,8 @@ void Engine::contacts(double h)
         return k < kMaxPilePasses && pass.overlap > kPileOverlap * r;
     };
     for (int k = 0; another(k); ++k) {
-        pass = resolvePairs(workerImpacts_[0], h, k == 0);
-        for (int i : movedList_) {
-            moved_[static_cast<std::size_t>(i)] = 0;
-            if (settle(i, workerImpacts_[0]))
-                markChanged(static_cast<std::uint32_t>(i));
-        }
-        movedList_.clear();
+        pass = resolvePairs(h, k == 0);
+        settleMoved();
     }
     covered_ = h;
 }
@@ -242,7 +237,8 @@ std::size_t Engine::bytes() const
 {
     std::size_t pairs = 0;
     for (const auto& chunk : pairs_)
-        pairs += chunk.list.capacity() * sizeof(broadphase::Pair);
+        pairs += (chunk.list[0].capacity() + chunk.list[1].capacity()) * sizeof(broadphase::Pair) +
+                 chunk.moved.capacity() * sizeof(int);
     return (balls_.capacity() + ballScratch_.capacity()) * sizeof(Ball) +
            (support_.capacity() + supportScratch_.capacity()) * sizeof(FaceRef) +
            (room_.capacity() + roomScratch_.capacity()) * sizeof(Room) +
@@ -251,7 +247,7 @@ std::size_t Engine::bytes() const
             histogram_.capacity()) *
                sizeof(std::uint32_t) +
            cellPos_.capacity() * sizeof(Eigen::Vector3d) + changed_.capacity() * sizeof(std::uint32_t) +
-           moved_.capacity() + movedList_.capacity() * sizeof(int) + pairs;
+           moved_.capacity() + pairs;
 }
 
 } // namespace ab::street

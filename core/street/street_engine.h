@@ -18,8 +18,11 @@
 //    (speculative contacts; street_pairs.cpp).
 //    (c) Balls beyond the open foot leave the run: they stay there at rest and cost nothing
 //    more.
-// 3. Threads share the flight and the pair search; the pairs are resolved on one thread in
-//    the search's order, so a run is the same bit for bit for any thread count.
+// 3. Threads share the flight, the pair search and the contact passes. The pairs are cut into
+//    chunks of whole columns along the street and resolved in two colours by the parity of
+//    their first ball's column: the pairs of one colour in different columns never share a
+//    ball, so each chunk resolves its own on any thread, and a run is the same bit for bit
+//    for any thread count (street_pairs.cpp point 3).
 #pragma once
 
 #include "street_census.h"
@@ -29,6 +32,7 @@
 #include "../broadphase/uniform_grid.h"
 #include "../simulation.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -123,6 +127,8 @@ private:
     // order within a key (stable counting sorts of active_, which is in slot order).
     void sortActiveByColumn();
     void buildCells();
+    // Cuts the sorted balls into chunks of whole columns along x (street_pairs.cpp point 3).
+    void cutChunks();
     void findPairs(int chunk);
     // One pass over the listed pairs, the speculative contacts of pairs apart that meet
     // within h included: the largest overlap it parted, and how many pairs it turned. The
@@ -132,12 +138,17 @@ private:
         double overlap = 0.0;
         int turned = 0;
     };
-    PassResult resolvePairs(long long& impacts, double h, bool first);
+    struct Chunk;
+    PassResult resolvePairs(double h, bool first);
+    // The pairs of one colour of a chunk, in the search's order; `before`: the pass's number.
+    void resolveChunk(Chunk& chunk, int colour, double h, bool first, std::uint32_t before);
+    // The street met again by the balls the pairs moved in the pass.
+    void settleMoved();
     bool collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const;
     void markChanged(std::uint32_t i) { changed_[i] = pass_; }
     // Parts two balls that overlap by `overlap` along n (a to b), half each, over-relaxed
-    // (street_pairs.cpp point 4).
-    void part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap);
+    // (street_pairs.cpp point 4); the balls it moves first in a pass join the chunk's list.
+    void part(Chunk& chunk, std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap);
     void retire();
     int substepsFor(double dt) const;
     // Re-orders the balls' slots: the active ones by column (x first), then the others, so
@@ -176,18 +187,23 @@ private:
     } columns_;
     std::vector<std::uint32_t> cellKey_, cellSlot_, keyScratch_, slotScratch_, histogram_;
     std::vector<Eigen::Vector3d> cellPos_;
-    // Per chunk of active balls: its pairs, the first `count` of `list` (the list keeps its
-    // size from substep to substep, so that filling it writes each entry once).
+    // Per chunk of the sorted balls, places [begin, end), whole columns along x: its pairs by
+    // the parity of their first ball's column, the first count[c] of list[c] (the lists keep
+    // their sizes from substep to substep, so that filling one writes each entry once); what
+    // its pairs did in the pass under way, and the balls they moved first in it.
     struct Chunk {
-        std::vector<broadphase::Pair> list;
-        std::size_t count = 0;
+        std::size_t begin = 0, end = 0;
+        std::array<std::vector<broadphase::Pair>, 2> list;
+        std::array<std::size_t, 2> count{};
+        PassResult pass;
+        long long impacts = 0;
+        std::vector<int> moved;
     };
     std::vector<Chunk> pairs_;
     // Passes over the pairs are numbered through the run (pass_, the current one); each ball
-    // keeps the number of the last pass that changed it, and a pass lists the balls it moved.
+    // keeps the number of the last pass that changed it.
     std::vector<std::uint32_t> changed_;
     std::vector<std::uint8_t> moved_; // moved by a pair in this pass
-    std::vector<int> movedList_;
     std::uint32_t pass_ = 0;
     double turnSpeed_ = 0.0; // an approach slower than this is round-off, not a turn
     std::vector<long long> workerImpacts_;

@@ -13,9 +13,15 @@
 //    at the columns z - 1, z, z + 1 of the next x (one run, found by a pointer that only moves
 //    forward as the balls go by), so every pair is found once, in an order that does not
 //    depend on the threads; the exact distance then keeps only the near ones.
-// 3. The pairs are resolved in that order on one thread, in passes until none overlaps by
-//    more than 1e-4 r and none approaches (Gauss-Seidel; 8 passes at most, up to 32 while a
-//    deep pile overlaps by more than 2e-3 r): eqs 2.4-2.7 along the line of centres with
+// 3. The pairs are resolved in passes until none overlaps by more than 1e-4 r and none
+//    approaches (Gauss-Seidel; 8 passes at most, up to 32 while a deep pile overlaps by more
+//    than 2e-3 r). The sorted balls are cut into chunks of about 2,048 that end where a column
+//    along x ends, and each chunk's pairs into two colours by the parity of the column along x
+//    of their first ball. A pair joins balls of that column and the next one along x, so the
+//    pairs of one colour in two different columns share no ball: a pass resolves the even
+//    colour, every chunk on whichever thread takes it, then the odd one, each chunk's pairs
+//    in the search's order. What a pair sees then depends on the chunks and the colours only,
+//    never on the threads. Each pair: eqs 2.4-2.7 along the line of centres with
 //    restitution e, Walton's impulse between rough balls (pair_friction.h), the overlap
 //    parted half each, over-relaxed (point 4); a ball moved then meets the street again
 //    (settle). Every pass also takes the pairs that will meet within the next substep
@@ -55,6 +61,21 @@ constexpr int kPairChunk = 2048; // active balls a worker searches at a time
 // will touch within the next substep (two balls close by at most 2 r in one).
 constexpr double kSkin = 2.0;
 constexpr double kOverRelax = 1.8; // point 4
+// A phase of the passes goes to the threads with this much work at least (pairs listed, balls
+// to settle); less is done on this thread, in the chunks' order, rather than wake the others
+// for a few microseconds of work. The chunks of a phase share no ball, so the balls come out
+// the same either way.
+constexpr std::size_t kSharedPairs = 8192;
+constexpr std::size_t kSharedSettles = 512;
+
+template <typename F> void shareIf(physical::WorkerPool& pool, bool worthIt, int items, F&& f)
+{
+    if (worthIt)
+        pool.forEach(items, f);
+    else
+        for (int item = 0; item < items; ++item)
+            f(item, 0);
+}
 
 } // namespace
 
@@ -141,27 +162,45 @@ void Engine::buildCells()
     cellPos_.resize(count);
     for (std::size_t s = 0; s < count; ++s)
         cellPos_[s] = balls_[cellSlot_[s]].p;
-    pairs_.resize((count + kPairChunk - 1) / kPairChunk);
+    cutChunks();
+}
+
+void Engine::cutChunks()
+{
+    // Point 3: about kPairChunk balls a chunk, grown to the end of its last column along x.
+    const std::size_t count = cellKey_.size();
+    const int zBits = columns_.zBits;
+    std::size_t chunks = 0;
+    for (std::size_t begin = 0; begin < count; ++chunks) {
+        std::size_t end = std::min(count, begin + kPairChunk);
+        while (end < count && (cellKey_[end] >> zBits) == (cellKey_[end - 1] >> zBits))
+            ++end;
+        if (pairs_.size() <= chunks)
+            pairs_.emplace_back();
+        pairs_[chunks].begin = begin;
+        pairs_[chunks].end = end;
+        begin = end;
+    }
+    pairs_.resize(chunks);
 }
 
 void Engine::findPairs(int chunk)
 {
-    std::vector<Pair>& out = pairs_[static_cast<std::size_t>(chunk)].list;
+    Chunk& own = pairs_[static_cast<std::size_t>(chunk)];
     const double reach = (2.0 + kSkin) * settings_.radius, reach2 = reach * reach;
     const std::size_t count = cellKey_.size();
-    const std::size_t begin = static_cast<std::size_t>(chunk) * kPairChunk;
-    const std::size_t end = std::min(count, begin + kPairChunk);
-    if (begin >= end) {
-        pairs_[static_cast<std::size_t>(chunk)].count = 0;
-        return;
-    }
+    const std::size_t begin = own.begin, end = own.end;
+    own.count = {0, 0};
     const std::uint32_t* key = cellKey_.data();
     const int zBits = columns_.zBits;
     const auto nz = static_cast<std::uint32_t>(columns_.nz), nx = static_cast<std::uint32_t>(columns_.nx);
     // Each ball's candidates [from, to) are written whether near or not and only the near ones
-    // kept (no branch on the distance, which goes either way).
-    std::size_t listed = 0;
+    // kept (no branch on the distance, which goes either way), in the list of the colour of
+    // the ball's column along x (point 3).
     const auto near = [&](std::size_t s, std::size_t from, std::size_t to) {
+        const std::uint32_t colour = (key[s] >> zBits) & 1u;
+        std::vector<Pair>& out = own.list[colour];
+        std::size_t listed = own.count[colour];
         if (listed + (to - from) > out.size())
             out.resize(2 * (listed + (to - from)));
         const Eigen::Vector3d p = cellPos_[s];
@@ -169,6 +208,7 @@ void Engine::findPairs(int chunk)
             out[listed] = Pair{cellSlot_[s], cellSlot_[t]};
             listed += (cellPos_[t] - p).squaredNorm() < reach2 ? 1 : 0;
         }
+        own.count[colour] = listed;
     };
     // The window of the next x for a key: its columns z - 1 .. z + 1 (within the grid).
     const auto window = [&](std::uint32_t k, std::uint32_t& low, std::uint32_t& high) {
@@ -197,7 +237,6 @@ void Engine::findPairs(int chunk)
             ++to;
         near(s, ahead, to);
     }
-    pairs_[static_cast<std::size_t>(chunk)].count = listed;
 }
 
 // Eqs 2.4-2.7 for equal masses along n (a to b), u = (v_b - v_a).n < 0: u becomes -e u through
@@ -219,68 +258,92 @@ bool Engine::collide(Ball& a, Ball& b, const Eigen::Vector3d& n, double u) const
     return bounces;
 }
 
-Engine::PassResult Engine::resolvePairs(long long& impacts, double h, bool first)
+Engine::PassResult Engine::resolvePairs(double h, bool first)
+{
+    // Point 3: the even colour, then the odd one, each chunk on any thread; their results are
+    // summed in the chunks' order.
+    const std::uint32_t before = pass_++; // balls this pass or the last one changed: >= before
+    const int chunks = static_cast<int>(pairs_.size());
+    std::array<std::size_t, 2> listed{};
+    for (Chunk& chunk : pairs_) {
+        chunk.pass = PassResult{};
+        chunk.impacts = 0;
+        listed[0] += chunk.count[0];
+        listed[1] += chunk.count[1];
+    }
+    for (int colour = 0; colour < 2; ++colour)
+        shareIf(*pool_, listed[static_cast<std::size_t>(colour)] >= kSharedPairs, chunks, [&](int chunk, int) {
+            resolveChunk(pairs_[static_cast<std::size_t>(chunk)], colour, h, first, before);
+        });
+    PassResult result;
+    for (const Chunk& chunk : pairs_) {
+        result.overlap = std::max(result.overlap, chunk.pass.overlap);
+        result.turned += chunk.pass.turned;
+        workerImpacts_[0] += chunk.impacts;
+    }
+    return result;
+}
+
+void Engine::resolveChunk(Chunk& chunk, int colour, double h, bool first, std::uint32_t before)
 {
     const double contact = 2.0 * settings_.radius;
     // Overlaps below 1e-9 r are the round-off of parting (centres some hundred metres out):
     // left as they are, so that a pair once parted stays still.
     const double partSlack = 1e-9 * settings_.radius;
-    const std::uint32_t before = pass_++; // balls this pass or the last one changed: >= before
-    PassResult result;
+    PassResult& result = chunk.pass;
     // An approach turned along n: the impulse, counted, and both balls changed.
     const auto turn = [&](const Pair& pair, const Eigen::Vector3d& n, double u) {
         if (collide(balls_[pair.a], balls_[pair.b], n, u))
-            ++impacts;
+            ++chunk.impacts;
         ++result.turned;
         markChanged(pair.a);
         markChanged(pair.b);
     };
-    for (const Chunk& chunk : pairs_)
-        for (const Pair& pair : std::span(chunk.list.data(), chunk.count)) {
-            // A pair whose balls are as they were when it was last visited (it did nothing then)
-            // would do nothing now.
-            if (!first && changed_[pair.a] < before && changed_[pair.b] < before)
+    const auto c = static_cast<std::size_t>(colour);
+    for (const Pair& pair : std::span(chunk.list[c].data(), chunk.count[c])) {
+        // A pair whose balls are as they were when it was last visited (it did nothing then)
+        // would do nothing now.
+        if (!first && changed_[pair.a] < before && changed_[pair.b] < before)
+            continue;
+        Ball& a = balls_[pair.a];
+        Ball& b = balls_[pair.b];
+        Eigen::Vector3d n = b.p - a.p;
+        const double d = n.norm();
+        if (!(d < contact)) {
+            // Apart: in every pass (an earlier contact may have turned them), a pair that
+            // would touch within the next substep
+            // (|D + dV t| = 2 r for the relative position D and velocity dV, the earlier root
+            // in [0, h]) collides now, along the normal it would meet at (a speculative
+            // contact): no two balls graze or pass within a substep unseen.
+            const Eigen::Vector3d dv = b.v - a.v;
+            const double approach = n.dot(dv), vv = dv.squaredNorm();
+            if (!(approach < 0.0))
                 continue;
-            Ball& a = balls_[pair.a];
-            Ball& b = balls_[pair.b];
-            Eigen::Vector3d n = b.p - a.p;
-            const double d = n.norm();
-            if (!(d < contact)) {
-                // Apart: in every pass (an earlier contact may have turned them), a pair that
-                // would touch within the next substep
-                // (|D + dV t| = 2 r for the relative position D and velocity dV, the earlier root
-                // in [0, h]) collides now, along the normal it would meet at (a speculative
-                // contact): no two balls graze or pass within a substep unseen.
-                const Eigen::Vector3d dv = b.v - a.v;
-                const double approach = n.dot(dv), vv = dv.squaredNorm();
-                if (!(approach < 0.0))
-                    continue;
-                const double disc = approach * approach - vv * (d * d - contact * contact);
-                if (disc < 0.0)
-                    continue; // they pass each other
-                const double t = (-approach - std::sqrt(disc)) / vv;
-                if (!(t <= h))
-                    continue;
-                const Eigen::Vector3d meet = (n + t * dv) / contact;
-                const double u = dv.dot(meet);
-                if (u < -turnSpeed_) // else they graze
-                    turn(pair, meet, u);
+            const double disc = approach * approach - vv * (d * d - contact * contact);
+            if (disc < 0.0)
+                continue; // they pass each other
+            const double t = (-approach - std::sqrt(disc)) / vv;
+            if (!(t <= h))
                 continue;
-            }
-            n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
-            const double u = (b.v - a.v).dot(n); // negative while they approach
-            if (u < -turnSpeed_)
-                turn(pair, n, u);
-            const double overlap = contact - d;
-            if (!(overlap > partSlack))
-                continue;
-            result.overlap = std::max(result.overlap, overlap);
-            part(pair.a, pair.b, n, overlap);
+            const Eigen::Vector3d meet = (n + t * dv) / contact;
+            const double u = dv.dot(meet);
+            if (u < -turnSpeed_) // else they graze
+                turn(pair, meet, u);
+            continue;
         }
-    return result;
+        n = d > 0.0 ? Eigen::Vector3d(n / d) : Eigen::Vector3d::UnitY();
+        const double u = (b.v - a.v).dot(n); // negative while they approach
+        if (u < -turnSpeed_)
+            turn(pair, n, u);
+        const double overlap = contact - d;
+        if (!(overlap > partSlack))
+            continue;
+        result.overlap = std::max(result.overlap, overlap);
+        part(chunk, pair.a, pair.b, n, overlap);
+    }
 }
 
-void Engine::part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap)
+void Engine::part(Chunk& chunk, std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, double overlap)
 {
     // Half each along n, over-relaxed (point 4): the pair ends (kOverRelax - 1) overlap apart,
     // its centre of mass (and its potential energy) kept.
@@ -291,9 +354,29 @@ void Engine::part(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& n, do
         markChanged(i);
         if (moved_[i] == 0) {
             moved_[i] = 1;
-            movedList_.push_back(static_cast<int>(i));
+            chunk.moved.push_back(static_cast<int>(i));
         }
     }
+}
+
+void Engine::settleMoved()
+{
+    // Each ball a pair moved is in one chunk's list, and settle reads and writes its own ball
+    // only (and the street's boxes, which stay put).
+    std::size_t moved = 0;
+    for (const Chunk& chunk : pairs_)
+        moved += chunk.moved.size();
+    shareIf(*pool_, moved >= kSharedSettles, static_cast<int>(pairs_.size()), [&](int c, int worker) {
+        Chunk& chunk = pairs_[static_cast<std::size_t>(c)];
+        long long met = 0;
+        for (int i : chunk.moved) {
+            moved_[static_cast<std::size_t>(i)] = 0;
+            if (settle(i, met))
+                markChanged(static_cast<std::uint32_t>(i));
+        }
+        chunk.moved.clear();
+        workerImpacts_[static_cast<std::size_t>(worker)] += met;
+    });
 }
 
 } // namespace ab::street

@@ -426,7 +426,10 @@ private slots:
 
     void aFloodIsTheSameBitForBitOnOneOrTwoThreads()
     {
-        RunSpec one = streetSpec({"n=3000", "mu=0.4", "beta=0.3"});
+        // 12,000 balls in 6 chunks of pairs list some 16,000 pairs of each colour every substep
+        // after the landing, enough for the two threads to share every phase of the contact
+        // passes, the settling of the moved balls included.
+        RunSpec one = streetSpec({"n=12000", "mu=0.4", "beta=0.3"});
         RunSpec two = one;
         two.threads = 2;
         auto a = ab::makeSimulation(one), b = ab::makeSimulation(two);
