@@ -45,6 +45,55 @@ double drawingCpuSeconds()
     return ticks / double(sysconf(_SC_CLK_TCK));
 }
 
+struct Sample {
+    double at, paint, interval; // seconds since play, milliseconds, milliseconds
+};
+
+// Fixed decimals whatever the locale (printf's follow LC_NUMERIC, which Qt sets).
+std::string fixed(double x, int decimals = 1)
+{
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::fixed, decimals).ptr;
+    return std::string(text, end);
+}
+
+// The summary line of a measurement: the frames after the start-up's (`startUp` seconds from
+// the first), their paint times and intervals (median, p95, max), the drawing CPU a frame,
+// the simulation's steps and the three longest intervals with their moments.
+std::string frameSummary(const std::vector<Sample>& samples, double startUp, double cpu, long long steps,
+                         double stepSeconds, int threads)
+{
+    const double firstAt = samples.empty() ? 0.0 : samples.front().at;
+    std::vector<Sample> playing, first;
+    for (const Sample& s : samples)
+        (s.at - firstAt < startUp ? first : playing).push_back(s);
+    std::vector<double> paint, interval;
+    for (const Sample& s : playing) {
+        paint.push_back(s.paint);
+        interval.push_back(s.interval);
+    }
+    std::sort(paint.begin(), paint.end());
+    std::sort(interval.begin(), interval.end());
+    auto pct = [](const std::vector<double>& v, double q) {
+        return fixed(v.empty() ? 0.0 : v[std::size_t(q * double(v.size() - 1))]);
+    };
+    double firstLongest = 0.0;
+    for (const Sample& s : first)
+        firstLongest = std::max(firstLongest, s.interval);
+    std::sort(playing.begin(), playing.end(), [](const Sample& a, const Sample& b) { return a.interval > b.interval; });
+    std::string longest;
+    for (std::size_t k = 0; k < std::min<std::size_t>(3, playing.size()); ++k)
+        longest += (k ? ", " : "") + fixed(playing[k].interval) + " ms at " + fixed(playing[k].at - firstAt, 2) + " s";
+    const std::size_t frames = samples.size();
+    return "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) + " p95 " +
+           pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " + pct(interval, 0.5) + " p95 " +
+           pct(interval, 0.95) + " max " + pct(interval, 1.0) + "; drawing CPU per frame " +
+           fixed(frames ? 1e3 * cpu / double(frames) : 0.0) + " ms; simulation: " + std::to_string(steps) +
+           " steps on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads") + ", step " +
+           fixed(stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " + fixed(startUp) +
+           " s of frames): " + std::to_string(first.size()) + " frames, longest " + fixed(firstLongest) + " ms\n";
+}
+
 } // namespace
 
 // --measure-frames: plays with the turntable on (so every frame is drawn anew) and on
@@ -54,9 +103,6 @@ double drawingCpuSeconds()
 // moments of its longest intervals. The run's own options come from --scene and --set.
 void measureFrames(ab::ui::MainWindow& window, double seconds)
 {
-    struct Sample {
-        double at, paint, interval; // seconds since play, milliseconds, milliseconds
-    };
     auto* samples = new std::vector<Sample>;
     auto* clock = new QElapsedTimer;
     ab::ui::BallView* view = window.view();
@@ -82,45 +128,9 @@ void measureFrames(ab::ui::MainWindow& window, double seconds)
     QTimer::singleShot(int(seconds * 1000), qApp, [samples, clock, &window, cpuStart] {
         constexpr double startUp = 0.5; // seconds from the first frame
         const double cpu = drawingCpuSeconds() - cpuStart;
-        const std::size_t frames = samples->size();
-        const double firstAt = samples->empty() ? 0.0 : samples->front().at;
-        std::vector<Sample> playing, first;
-        for (const Sample& s : *samples)
-            (s.at - firstAt < startUp ? first : playing).push_back(s);
-        std::vector<double> paint, interval;
-        for (const Sample& s : playing) {
-            paint.push_back(s.paint);
-            interval.push_back(s.interval);
-        }
-        std::sort(paint.begin(), paint.end());
-        std::sort(interval.begin(), interval.end());
-        // Fixed decimals whatever the locale (printf's follow LC_NUMERIC, which Qt sets).
-        auto ms = [](double x, int decimals = 1) {
-            char text[32];
-            const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::fixed, decimals).ptr;
-            return std::string(text, end);
-        };
-        auto pct = [&](const std::vector<double>& v, double q) {
-            return ms(v.empty() ? 0.0 : v[std::size_t(q * double(v.size() - 1))]);
-        };
-        double firstLongest = 0.0;
-        for (const Sample& s : first)
-            firstLongest = std::max(firstLongest, s.interval);
-        std::sort(playing.begin(), playing.end(),
-                  [](const Sample& a, const Sample& b) { return a.interval > b.interval; });
-        std::string longest;
-        for (std::size_t k = 0; k < std::min<std::size_t>(3, playing.size()); ++k)
-            longest += (k ? ", " : "") + ms(playing[k].interval) + " ms at " + ms(playing[k].at - firstAt, 2) + " s";
         const auto st = window.controller().status();
-        const int threads = window.controller().spec().threads;
         const std::string line =
-            "frames " + std::to_string(interval.size()) + "; paint ms: median " + pct(paint, 0.5) + " p95 " +
-            pct(paint, 0.95) + " max " + pct(paint, 1.0) + "; interval ms: median " + pct(interval, 0.5) + " p95 " +
-            pct(interval, 0.95) + " max " + pct(interval, 1.0) + "; drawing CPU per frame " +
-            ms(frames ? 1e3 * cpu / double(frames) : 0.0) + " ms; simulation: " + std::to_string(st.steps) +
-            " steps on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads") + ", step " +
-            ms(st.stepSeconds * 1e3) + " ms; longest: " + longest + "; start-up (the first " + ms(startUp) +
-            " s of frames): " + std::to_string(first.size()) + " frames, longest " + ms(firstLongest) + " ms\n";
+            frameSummary(*samples, startUp, cpu, st.steps, st.stepSeconds, window.controller().spec().threads);
         std::fputs(line.c_str(), stdout);
         delete samples;
         delete clock;

@@ -249,9 +249,11 @@ std::optional<int> readOptions(const QStringList& arguments, Options& o)
         if (parser.isSet(QStringLiteral("threads"))) {
             const long long threads =
                 ab::parseInteger(parser.value(QStringLiteral("threads")).toStdString(), "--threads");
-            if (threads < 1 || threads > 256)
-                throw ab::InputError(
-                    QApplication::translate("main", "--threads: %1 is outside [1, 256]").arg(threads).toStdString());
+            if (threads < 1 || threads > ab::kMaxThreads)
+                throw ab::InputError(QApplication::translate("main", "--threads: %1 is outside [1, %2]")
+                                         .arg(threads)
+                                         .arg(ab::kMaxThreads)
+                                         .toStdString());
             o.threads = static_cast<int>(threads);
         }
         if (parser.isSet(QStringLiteral("measure-frames"))) {

@@ -63,8 +63,9 @@ std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec)
         throw std::logic_error("parameter values of another scene");
     if (info.crossCheck)
         info.crossCheck(spec.params);
-    if (spec.threads < 1 || spec.threads > 256)
-        throw InputError("--threads: " + std::to_string(spec.threads) + " is outside [1, 256]");
+    if (spec.threads < 1 || spec.threads > kMaxThreads)
+        throw InputError("--threads: " + std::to_string(spec.threads) + " is outside [1, " +
+                         std::to_string(kMaxThreads) + "]");
     const double dt = spec.dt.value_or(defaultDt(spec.scene, spec.model));
     if (!std::isfinite(dt) || dt <= 0.0)
         throw InputError("--dt: " + formatNumber(dt) + " must be a positive finite step");

@@ -29,11 +29,14 @@ struct RunSpec {
     Integrator integrator;
     ImpactMode impacts = ImpactMode::Located;
     Broadphase broadphase = Broadphase::Grid;
-    int threads = 1;
+    int threads = 1;          // 1 to kMaxThreads
     std::optional<double> dt; // unset: the model's default for the scene
     ParamValues params;
     std::optional<State> init; // start here instead of the parameters' start values
 };
+
+// The most threads a run may ask for (--threads, in the CLI and the window).
+inline constexpr int kMaxThreads = 256;
 
 // Another way to compute the same scene: a model, an integrator and impact finding, and
 // optionally its own step. A comparison run is `variantOf` the main run: the same scene,

@@ -129,7 +129,7 @@ Options readOptions(Parsed& args)
             throwUnknownValue("--model", *text, valueWords(Values::Model));
         o.model = *model;
     }
-    o.threads = static_cast<int>(args.integer("threads", 1, 256).value_or(1));
+    o.threads = static_cast<int>(args.integer("threads", 1, ab::kMaxThreads).value_or(1));
     o.steps = static_cast<int>(args.integer("steps", 1, 1'000'000).value_or(o.steps));
     o.repeats = static_cast<int>(args.integer("repeats", 1, 99).value_or(o.repeats));
     o.out = args.option("out");

@@ -98,7 +98,7 @@ RunSetup readRunSetup(Parsed& args)
     spec.integrator = readEnum(args, "integrator", parseIntegrator, spec.integrator, Values::Integrator);
     spec.impacts = readEnum(args, "impacts", parseImpactMode, spec.impacts, Values::Impacts);
     spec.broadphase = readEnum(args, "broadphase", parseBroadphase, spec.broadphase, Values::Broadphase);
-    if (const auto t = args.integer("threads", 1, 256))
+    if (const auto t = args.integer("threads", 1, ab::kMaxThreads))
         spec.threads = static_cast<int>(*t);
     if (const auto dt = args.real("dt")) {
         if (*dt <= 0.0)

@@ -3237,12 +3237,12 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>--set: ingen etapp har en parameter &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>--threads: %1 is outside [1, 256]</source>
-        <translation>--threads: %1 ligger utanför [1, 256]</translation>
-    </message>
-    <message>
         <source>Step the physical model&apos;s many balls on N threads (1 to 256; by default one fewer than the processor&apos;s cores, at most 8).</source>
         <translation>Stega den fysikaliska modellens många bollar på N trådar (1 till 256; som standard en färre än processorns kärnor, högst 8).</translation>
+    </message>
+    <message>
+        <source>--threads: %1 is outside [1, %2]</source>
+        <translation>--threads: %1 ligger utanför [1, %2]</translation>
     </message>
 </context>
 </TS>

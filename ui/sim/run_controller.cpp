@@ -4,7 +4,6 @@
 #include "playback_rate.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -48,7 +47,7 @@ std::unique_ptr<Simulation> makeComparison(const RunSpec& main, const Simulation
     return sim;
 }
 
-std::atomic<int> engineThreadCount{0}; // 0: defaultEngineThreads()
+int engineThreadCount = 0; // 0: defaultEngineThreads(); read and set on the GUI thread only
 
 } // namespace
 
@@ -60,15 +59,14 @@ int RunController::defaultEngineThreads()
 
 int RunController::engineThreads()
 {
-    const int set = engineThreadCount.load(std::memory_order_relaxed);
-    return set > 0 ? set : defaultEngineThreads();
+    return engineThreadCount > 0 ? engineThreadCount : defaultEngineThreads();
 }
 
 void RunController::setEngineThreads(int threads)
 {
-    if (threads < 1 || threads > 256)
-        throw std::invalid_argument("RunController::setEngineThreads: outside [1, 256]");
-    engineThreadCount.store(threads, std::memory_order_relaxed);
+    if (threads < 1 || threads > kMaxThreads)
+        throw std::invalid_argument("RunController::setEngineThreads: outside [1, kMaxThreads]");
+    engineThreadCount = threads;
 }
 
 RunController::~RunController()

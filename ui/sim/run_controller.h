@@ -58,7 +58,7 @@ public:
     static double realTimeRate(const SceneInfo& scene);
 
     // Threads that step the physical model's many balls (stages 4 and 5) in every run the
-    // window builds from now on, 1 to 256: the engines give the same balls for any count,
+    // window builds from now on, 1 to kMaxThreads: the engines give the same balls for any count,
     // so this changes the pace only. By default one fewer than the processor's cores (the
     // window's own thread draws), at least 1 and at most 8 (more cores than the grid's
     // slabs of a few thousand balls each stay idle at the sizes the window plays).
