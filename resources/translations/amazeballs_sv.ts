@@ -689,6 +689,14 @@
         <source>Speeds</source>
         <translation>Farter</translation>
     </message>
+    <message>
+        <source>Chart page</source>
+        <translation>Diagramsida</translation>
+    </message>
+    <message>
+        <source>The charts shown: one page of the stage&apos;s charts</source>
+        <translation>Diagrammen som visas: en sida av etappens diagram</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ExportOptionsDialog</name>
@@ -1044,7 +1052,7 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     </message>
     <message>
         <source>Energy per unit mass, all balls (%1)</source>
-        <translation>Energi per massenhet, alla bollar (%1)</translation>
+        <translation>Alla bollars energi/massa (%1)</translation>
     </message>
     <message>
         <source>Energy, all balls (kg %1)</source>
@@ -1140,7 +1148,7 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     </message>
     <message>
         <source>Balls passing the foot of each block</source>
-        <translation>Bollar som passerar varje kvarters fot</translation>
+        <translation>Bollar förbi varje kvarters fot</translation>
     </message>
     <message>
         <source>balls per %1</source>

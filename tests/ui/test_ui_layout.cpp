@@ -156,9 +156,9 @@ void checkHeader(const QHeaderView* header, QStringList& cut)
 
 void checkTabs(const QTabBar* tabs, QStringList& cut)
 {
-    // Tabs that run past the bar's edge must scroll there, or the last ones are out of reach.
-    if (tabs->count() > 0 && tabs->tabRect(tabs->count() - 1).right() > tabs->width() && !tabs->usesScrollButtons())
-        cut << QStringLiteral("%1: tabs past the edge, without scroll buttons").arg(where(tabs));
+    // Tabs that run past the bar's edge are cut there, or behind its scroll arrows.
+    if (tabs->count() > 0 && tabs->tabRect(tabs->count() - 1).right() > tabs->width())
+        cut << QStringLiteral("%1: tabs past the edge").arg(where(tabs));
     const QFontMetrics fm(tabs->font());
     for (int i = 0; i < tabs->count(); ++i) {
         const QString text = shown(tabs->tabText(i));

@@ -17,8 +17,10 @@
 #include <QChartView>
 #include <QComboBox>
 #include <QLabel>
+#include <QLayout>
 #include <QLineSeries>
 #include <QStandardItemModel>
+#include <QTabBar>
 #include <QtTest>
 
 #include <cmath>
@@ -198,6 +200,47 @@ private slots:
             QVERIFY2(panel.chartView(kind)->height() >= 200, chartKey(kind).data());
         }
         QVERIFY(!panel.chartShown(ChartKind::Activity) || !panel.chartView(ChartKind::Activity)->isVisible());
+    }
+
+    void chartPagesWhoseTabsDoNotFitAreChosenFromAList()
+    {
+        // A panel short enough for one chart a page and too narrow for the pages' tabs
+        // (as the street's panel in lecture mode at 1280x720): a list names the pages whole.
+        ChartPanel panel;
+        panel.resize(300, 330);
+        ChartUnits units;
+        units.streetBlocks = 3;
+        panel.configure(sceneInfo(SceneId::Street), 10, 0, 30.0, units);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTabBar* pages = panel.pages();
+        QComboBox* menu = panel.pagesMenu();
+        QCOMPARE_GT(pages->count(), 2);
+        QVERIFY(pages->sizeHint().width() > panel.layout()->contentsRect().width());
+        QVERIFY(menu->isVisible());
+        QVERIFY(!pages->isVisible());
+        QCOMPARE(menu->count(), pages->count());
+        for (int page = menu->count() - 1; page >= 0; --page) {
+            menu->setCurrentIndex(page);
+            QCOMPARE(pages->currentIndex(), page);
+            QCOMPARE(menu->currentText(), pages->tabText(page));
+            // The charts shown are the ones the page's name lists.
+            int shown = 0;
+            for (ChartKind kind : panel.shownCharts())
+                shown += panel.onCurrentPage(kind) ? 1 : 0;
+            QCOMPARE(shown, int(menu->currentText().split(" + ").size()));
+            // And nothing else takes room on the page: no chart's place is left empty.
+            for (ChartKind kind : allChartKinds()) {
+                const QWidget* view = panel.chartView(kind);
+                QVERIFY2(!view->parentWidget()->isVisibleTo(&panel) || view->isVisibleTo(&panel),
+                         qPrintable(QString("page %1: an empty place for %2").arg(page).arg(chartKey(kind).data())));
+            }
+        }
+        // Where the tabs fit whole, they are the pages again.
+        panel.resize(3000, 330);
+        QTRY_VERIFY(pages->isVisible());
+        QVERIFY(!menu->isVisible());
+        QVERIFY(pages->tabRect(pages->count() - 1).right() <= pages->width());
     }
 
     void reportModelIsNotOfferedForTheStreet()

@@ -2,6 +2,7 @@
 #include "chart_panel.h"
 
 #include <QChartView>
+#include <QComboBox>
 #include <QContextMenuEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -9,6 +10,7 @@
 #include <QLegendMarker>
 #include <QMenu>
 #include <QScrollArea>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStringList>
@@ -64,17 +66,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     row->addWidget(hint, 1);
     layout->addLayout(row);
 
-    pages_ = new QTabBar;
-    pages_->setObjectName("chartPages");
-    pages_->setExpanding(false);
-    pages_->setElideMode(Qt::ElideNone);
-    pages_->setUsesScrollButtons(false);
-    pages_->hide();
-    layout->addWidget(pages_);
-    connect(pages_, &QTabBar::currentChanged, this, [this](int page) {
-        if (!updating_ && page >= 0)
-            showPage(page);
-    });
+    addPages(layout);
 
     auto* splitter = new QSplitter(Qt::Vertical);
     for (ChartKind kind : allChartKinds()) {
@@ -114,6 +106,39 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
         if (!updating_)
             emit ballRequested(v - 1);
+    });
+}
+
+void ChartPanel::addPages(QVBoxLayout* layout)
+{
+    pages_ = new QTabBar;
+    pages_->setObjectName("chartPages");
+    pages_->setExpanding(false);
+    pages_->setElideMode(Qt::ElideNone);
+    pages_->setUsesScrollButtons(false);
+    pages_->hide();
+    layout->addWidget(pages_);
+    // Where the tabs do not fit the panel whole (the street's six charts, one a page in lecture
+    // mode at 1280x720), a list names the page shown instead: scroll arrows would hide part of
+    // a tab's name from the back of the hall.
+    pagesMenu_ = new QComboBox;
+    pagesMenu_->setObjectName("chartPagesMenu");
+    pagesMenu_->setAccessibleName(tr("Chart page"));
+    pagesMenu_->setToolTip(tr("The charts shown: one page of the stage's charts"));
+    pagesMenu_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    pagesMenu_->hide();
+    layout->addWidget(pagesMenu_, 0, Qt::AlignLeft);
+    connect(pages_, &QTabBar::currentChanged, this, [this](int page) {
+        if (page >= 0 && page < pagesMenu_->count()) {
+            const QSignalBlocker quiet(pagesMenu_);
+            pagesMenu_->setCurrentIndex(page);
+        }
+        if (!updating_ && page >= 0)
+            showPage(page);
+    });
+    connect(pagesMenu_, &QComboBox::currentIndexChanged, this, [this](int page) {
+        if (page >= 0)
+            pages_->setCurrentIndex(page);
     });
 }
 
@@ -259,8 +284,10 @@ void ChartPanel::paginate()
     const int header = layout()->itemAt(0) ? layout()->itemAt(0)->sizeHint().height() : 0;
     const int room = height() - header - layout()->spacing();
     std::size_t perPage = std::max<std::size_t>(1, std::size_t(std::max(room, 0) / need));
-    if (perPage < kinds.size()) // the tabs take a row of their own
-        perPage = std::max<std::size_t>(1, std::size_t(std::max(room - pages_->sizeHint().height(), 0) / need));
+    if (perPage < kinds.size()) { // the tabs, or the list of pages, take a row of their own
+        const int row = std::max(pages_->sizeHint().height(), pagesMenu_->sizeHint().height());
+        perPage = std::max<std::size_t>(1, std::size_t(std::max(room - row, 0) / need));
+    }
     const int count = kinds.empty() ? 0 : int((kinds.size() + perPage - 1) / perPage);
     const int current = pages_->currentIndex();
     updating_ = true;
@@ -278,11 +305,22 @@ void ChartPanel::paginate()
         else
             pages_->addTab(label);
     }
-    pages_->setVisible(count > 1);
-    // Tabs wider than the panel (the street's six charts, one a page in lecture mode) scroll
-    // with arrows rather than run past its edge.
-    pages_->setUsesScrollButtons(pages_->sizeHint().width() > width());
+    {
+        const QSignalBlocker quiet(pagesMenu_);
+        pagesMenu_->clear();
+        for (int p = 0; p < count; ++p)
+            pagesMenu_->addItem(pages_->tabText(p));
+    }
+    // Tabs wider than the panel give way to the list of pages (see the constructor).
+    const QMargins margins = layout()->contentsMargins();
+    const bool tabsFit = pages_->sizeHint().width() <= width() - margins.left() - margins.right();
+    pages_->setVisible(count > 1 && tabsFit);
+    pagesMenu_->setVisible(count > 1 && !tabsFit);
     pages_->setCurrentIndex(std::clamp(current, 0, std::max(count - 1, 0)));
+    {
+        const QSignalBlocker quiet(pagesMenu_);
+        pagesMenu_->setCurrentIndex(pages_->currentIndex());
+    }
     updating_ = false;
     showPage(pages_->currentIndex());
 }
@@ -291,7 +329,9 @@ void ChartPanel::showPage(int page)
 {
     for (ChartKind kind : allChartKinds()) {
         const std::size_t i = slot(kind);
-        holders_[i]->setVisible(shown(i) && (pages_->count() <= 1 || page_[i] == page));
+        // A chart wanted but not drawable now (the difference chart without a comparison or a
+        // closed form) has a hidden view and no page: its holder must not keep an empty place.
+        holders_[i]->setVisible(shown(i) && !views_[i]->isHidden() && (pages_->count() <= 1 || page_[i] == page));
     }
     emit pageChanged();
 }

@@ -17,9 +17,11 @@
 #include <vector>
 
 class QChartView;
+class QComboBox;
 class QLabel;
 class QSpinBox;
 class QTabBar;
+class QVBoxLayout;
 
 namespace ab::ui {
 
@@ -58,7 +60,10 @@ public:
     // The charts the scene shows (applying and wished for), in order, on any page.
     std::vector<ChartKind> shownCharts() const;
     // The pages' tabs (hidden while every shown chart fits on one page).
+    // The pages of charts: tabs, or a list of them where the tabs do not fit whole
+    // (pagesMenu); the tab bar keeps the current page either way.
     QTabBar* pages() const { return pages_; }
+    QComboBox* pagesMenu() const { return pagesMenu_; }
     // The smallest height at which a chart keeps its title, legend and axis labels whole,
     // at the current chart font.
     int readableChartHeight() const;
@@ -81,6 +86,8 @@ private:
     // Splits the shown charts into pages that fit the panel's height.
     void paginate();
     void showPage(int page);
+    // The page tabs and the list that stands in for them, under the ball's row.
+    void addPages(QVBoxLayout* layout);
     bool shown(std::size_t slot) const { return wanted_[slot] && applies_[slot]; }
     static constexpr std::size_t kinds = kSlots;
     // How many points a track is thinned to for the chart in `slot`.
@@ -97,6 +104,7 @@ private:
     std::array<QWidget*, kinds> holders_{}; // each view in a holder: the page hides the holder
     std::array<int, kinds> page_{};
     QTabBar* pages_;
+    QComboBox* pagesMenu_; // the pages where the tabs do not fit whole
     std::array<bool, kinds> applies_{};
     std::array<bool, kinds> wanted_{};
     QSpinBox* ball_;
