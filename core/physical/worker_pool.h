@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // A fixed team of threads for the phases of an N-ball step. forEach(count, f) calls
 // f(item, worker) for every item in [0, count) and returns when all are done; the caller
-// works too (as worker 0).
+// works too (as worker 0). forEach(count, f, false) does the items in order on the caller
+// alone: a phase too small to pay for waking the others (items that share no data give the
+// same results either way).
 // 1. Each worker starts on an equal run of the items and, once done, takes items one at
 //    a time from the others' runs: work stays where its data was last time, and a worker
 //    the system holds back delays the phase by one item, not by its whole share.
@@ -56,9 +58,9 @@ public:
         return static_cast<int>(threads_.size()) + 1;
     }
 
-    template <typename F> void forEach(int count, F&& f)
+    template <typename F> void forEach(int count, F&& f, bool share = true)
     {
-        if (threads_.empty() || count <= 1) {
+        if (!share || threads_.empty() || count <= 1) {
             for (int item = 0; item < count; ++item)
                 f(item, 0);
             return;

@@ -68,15 +68,6 @@ constexpr double kOverRelax = 1.8; // point 4
 constexpr std::size_t kSharedPairs = 8192;
 constexpr std::size_t kSharedSettles = 512;
 
-template <typename F> void shareIf(physical::WorkerPool& pool, bool worthIt, int items, F&& f)
-{
-    if (worthIt)
-        pool.forEach(items, f);
-    else
-        for (int item = 0; item < items; ++item)
-            f(item, 0);
-}
-
 } // namespace
 
 void Engine::sizeColumns()
@@ -272,9 +263,10 @@ Engine::PassResult Engine::resolvePairs(double h, bool first)
         listed[1] += chunk.count[1];
     }
     for (int colour = 0; colour < 2; ++colour)
-        shareIf(*pool_, listed[static_cast<std::size_t>(colour)] >= kSharedPairs, chunks, [&](int chunk, int) {
-            resolveChunk(pairs_[static_cast<std::size_t>(chunk)], colour, h, first, before);
-        });
+        pool_->forEach(
+            chunks,
+            [&](int chunk, int) { resolveChunk(pairs_[static_cast<std::size_t>(chunk)], colour, h, first, before); },
+            listed[static_cast<std::size_t>(colour)] >= kSharedPairs);
     PassResult result;
     for (const Chunk& chunk : pairs_) {
         result.overlap = std::max(result.overlap, chunk.pass.overlap);
@@ -366,7 +358,7 @@ void Engine::settleMoved()
     std::size_t moved = 0;
     for (const Chunk& chunk : pairs_)
         moved += chunk.moved.size();
-    shareIf(*pool_, moved >= kSharedSettles, static_cast<int>(pairs_.size()), [&](int c, int worker) {
+    const auto settleChunk = [&](int c, int worker) {
         Chunk& chunk = pairs_[static_cast<std::size_t>(c)];
         long long met = 0;
         for (int i : chunk.moved) {
@@ -376,7 +368,8 @@ void Engine::settleMoved()
         }
         chunk.moved.clear();
         workerImpacts_[static_cast<std::size_t>(worker)] += met;
-    });
+    };
+    pool_->forEach(static_cast<int>(pairs_.size()), settleChunk, moved >= kSharedSettles);
 }
 
 } // namespace ab::street
