@@ -12,11 +12,15 @@
 #include "ui/shell/window_shell.h"
 #include "ui/theme/theme.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
 #include <QApplication>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QMenu>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextBrowser>
 #include <QValueAxis>
 #include <QtTest>
 
@@ -67,6 +71,20 @@ void activate(QWidget& w)
     w.show();
     QApplication::setActiveWindow(&w);
     QVERIFY(QTest::qWaitForWindowActive(&w));
+}
+
+// Whether the navigator's text shows the whole first line holding `needle` (its block's
+// first line, at least): between the top of the scrolled view and its bottom.
+bool lineInSight(const QTextBrowser& text, const QString& needle)
+{
+    const QTextDocument& doc = *text.document();
+    const QTextBlock block = doc.find(needle).block();
+    if (!block.isValid() || !block.layout() || block.layout()->lineCount() == 0)
+        return false;
+    const double top = doc.documentLayout()->blockBoundingRect(block).top() + block.layout()->lineAt(0).y();
+    const double bottom = top + block.layout()->lineAt(0).height();
+    const int from = text.verticalScrollBar()->value();
+    return top >= from && bottom <= from + text.viewport()->height();
 }
 
 ab::ui::MotionChart* positionChart(MainWindow& w)
@@ -124,6 +142,37 @@ private slots:
         lecture.previous();
         QCOMPARE(nav.revealed(), count - 1);
         QCOMPARE(shownEquations(nav), firstShown(nav, count - 1));
+    }
+
+    void walkKeepsTheTitleThenTheNewestEquationInSight()
+    {
+        // Lecture mode's fonts in a small full screen: the stage's text is longer than its panel.
+        ab::ui::WindowShell shell;
+        MainWindow& w = shell.window();
+        shell.lecture().setActive(true);
+        activate(w);
+        StageNavigator& nav = *w.navigator();
+        auto* text = nav.findChild<QTextBrowser*>("stageText");
+        QVERIFY(text);
+        const ab::SceneInfo& info = ab::sceneInfo(nav.current());
+        const QString title = QStringLiteral("Stage %1: ").arg(info.stage);
+        QTRY_VERIFY(lineInSight(*text, title)); // the title's first line, not scrolled past
+        QCOMPARE(text->verticalScrollBar()->value(), 0);
+        bool overflowed = false;
+        for (int k = 1; k <= nav.equationCount(); ++k) {
+            shell.lecture().next();
+            const ab::Equation& e = info.equations[static_cast<std::size_t>(k - 1)];
+            const QString number = QStringLiteral("(%1)").arg(QString::fromStdString(e.number));
+            QTRY_VERIFY2(lineInSight(*text, number), qPrintable(number));
+            overflowed = overflowed || text->verticalScrollBar()->maximum() > 0;
+        }
+        QVERIFY(overflowed); // else nothing here needed scrolling
+        shell.lecture().previous();
+        QTRY_VERIFY(lineInSight(*text, QStringLiteral("(%1)").arg(QString::fromStdString(
+                                           info.equations[static_cast<std::size_t>(nav.equationCount() - 2)].number))));
+        while (nav.revealed() > 0)
+            shell.lecture().previous();
+        QTRY_VERIFY(lineInSight(*text, title));
     }
 
     void outsideTheWalkTheNavigatorShowsEveryEquation()

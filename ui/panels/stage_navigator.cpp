@@ -24,6 +24,9 @@ QString html(const std::string& s)
     return coreText(s).toHtmlEscaped();
 }
 
+// Marks the newest equation of the walk (showText scrolls it into sight).
+constexpr char kNewestAnchor[] = "newest-equation";
+
 int indexOf(SceneId id)
 {
     const auto& scenes = allScenes();
@@ -60,6 +63,7 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
     text_ = new QTextBrowser;
     text_->setObjectName("stageText");
     text_->setOpenLinks(false);
+    text_->viewport()->installEventFilter(this);
     layout->addWidget(text_, 1);
 
     progress_ = new QLabel;
@@ -102,8 +106,10 @@ QString StageNavigator::describe(const SceneInfo& s, int revealed)
         // In the walk the newest equation stands out; the formulas are the report's own.
         const bool newest = revealed >= 0 && i + 1 == shown;
         const QString formula = newest ? QStringLiteral("<b><tt>%1</tt></b>") : QStringLiteral("<tt>%1</tt>");
-        out += QStringLiteral("<tr><td>(%1)</td><td>%2</td></tr><tr><td></td><td><i>%3</i></td></tr>")
-                   .arg(QString::fromStdString(e.number).toHtmlEscaped(),
+        const QString anchor =
+            newest ? QStringLiteral("<a name='%1'></a>").arg(QLatin1String(kNewestAnchor)) : QString();
+        out += QStringLiteral("<tr><td>%1(%2)</td><td>%3</td></tr><tr><td></td><td><i>%4</i></td></tr>")
+                   .arg(anchor, QString::fromStdString(e.number).toHtmlEscaped(),
                         formula.arg(QString::fromStdString(e.text).toHtmlEscaped()), html(e.meaning));
     }
     out += QStringLiteral("</table>");
@@ -230,7 +236,29 @@ void StageNavigator::showText()
                        : revealed_ < count
                            ? tr("Equation %1 of %2. Next shows the next equation.").arg(revealed_).arg(count)
                            : tr("All %1 equations shown. Next opens the next stage.").arg(count));
-    text_->verticalScrollBar()->setValue(text_->verticalScrollBar()->maximum()); // keep the newest in sight
+    keepInSight();
+}
+
+void StageNavigator::keepInSight()
+{
+    // In the walk the newest equation stands at the top of the text, the ones before it above
+    // (scrolled away) and its meaning, the notes and the run below; before the first one the
+    // stage's title and summary are read from their first line.
+    if (!walking_)
+        return;
+    if (revealed_ == 0)
+        text_->verticalScrollBar()->setValue(0);
+    else
+        text_->scrollToAnchor(QLatin1String(kNewestAnchor)); // once shown, where it is not shown yet
+}
+
+bool StageNavigator::eventFilter(QObject* watched, QEvent* event)
+{
+    // A resize re-wraps the text and moves what was kept in sight (a window first shown at its
+    // size, lecture mode's larger fonts, a splitter dragged).
+    if (watched == text_->viewport() && event->type() == QEvent::Resize)
+        keepInSight();
+    return QWidget::eventFilter(watched, event);
 }
 
 void StageNavigator::request(int index)

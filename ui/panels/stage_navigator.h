@@ -62,11 +62,13 @@ public slots:
 
 protected:
     void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void request(int index);
     void retranslate();
     void showText();
+    void keepInSight(); // in the walk: the newest equation at the top, or the title
 
     QButtonGroup* buttons_;
     QTextBrowser* text_;
