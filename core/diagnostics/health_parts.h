@@ -96,6 +96,8 @@ struct HealthCheck::Impl {
     int sampledAbove = HealthCheck::defaultSampledAbove;
     // gridOverlaps' arrays, kept between steps.
     std::vector<std::uint32_t> cellOf, order, cellStart, cursor;
+    std::vector<std::array<std::int32_t, 3>> cellXyz; // hashedOverlaps' cells, 2r wide
+    std::vector<std::uint32_t> visitedBy;             // and the last ball to look into each bucket
     // The angular momentum check (health_spin.cpp): the faces other than the floor, a
     // ceiling where the scene has one; balls near another ball in this step (checkPairs).
     Eigen::Vector3d sideLo, sideHi;
@@ -194,6 +196,7 @@ struct HealthCheck::Impl {
     // of many balls in a hashed grid.
     void checkStreet(const State& a, int i);
     void hashedOverlaps(const State& b, const State& a);
+    std::uint32_t hashStreetBalls(const State& a); // hashedOverlaps' grid; returns its mask
 
     // Angular momentum about the contact point at the floor, r n x v + q r^2 w per unit mass
     // (docs/spin.md S13, S4), for each ball that the step brought near the floor and kept

@@ -196,10 +196,12 @@ private slots:
 
     void twoProjectilesGrazingOnTheStreetWarnButABallAContactPassMovedDoesNot()
     {
-        // Two balls 2 m above the road fly across it towards each other at 12 m/s, 2 r - 0.01 r
-        // apart along the street, from 0.2 m apart across it to 0.2 m past: the straight path
+        // Two balls 2 m above the road fly across it towards each other at 2.4 m/s, 2 r - 0.01 r
+        // apart along the street, from 4 cm apart across it to 4 cm past: the straight path
         // between their step ends comes 0.01 r inside contact. Both follow the exact projectile
         // x1 = x0 + v0 dt - g dt^2 / 2 e_y, v1 = v0 - g dt e_y, so the step missed a graze.
+        // (The check's grid holds the step ends in cells 2 r wide: each ball moves 4 cm, so the
+        // two end in neighbouring cells.)
         RunSpec spec = testing::spec(SceneId::Street, {"n=2"}, ModelKind::Physical);
         const double dt = 1.0 / 60.0; // the scene's step
         spec.dt = dt;
@@ -209,10 +211,10 @@ private slots:
         State before;
         before.resize(2);
         before.w.setZero(3, 2);
-        before.p.col(0) = Eigen::Vector3d(x, y, -0.1);
-        before.p.col(1) = Eigen::Vector3d(x + 1.99 * r, y, 0.1);
-        before.v.col(0) = Eigen::Vector3d(0.0, 0.0, 12.0);
-        before.v.col(1) = Eigen::Vector3d(0.0, 0.0, -12.0);
+        before.p.col(0) = Eigen::Vector3d(x, y, -0.02);
+        before.p.col(1) = Eigen::Vector3d(x + 1.99 * r, y, 0.02);
+        before.v.col(0) = Eigen::Vector3d(0.0, 0.0, 2.4);
+        before.v.col(1) = Eigen::Vector3d(0.0, 0.0, -2.4);
         State after = before;
         after.t = dt;
         for (int i = 0; i < 2; ++i) {
@@ -223,7 +225,7 @@ private slots:
         HealthCheck grazed(*sim, before);
         grazed.check(before, after);
         QCOMPARE(grazed.worst().level, Health::Warning);
-        QVERIFY(mentions(grazed, "grazed within one step"));
+        QVERIFY2(mentions(grazed, "grazed within one step"), grazed.worst().line().c_str());
 
         // The same step, but a contact pass parted ball 0 from a third ball by 1 mm downwards,
         // its velocity untouched (street_pairs.cpp point 4): it touched a ball, its path was not
@@ -233,6 +235,48 @@ private slots:
         parted.check(before, after);
         QVERIFY2(!mentions(parted, "grazed"), parted.worst().line().c_str());
         QCOMPARE(parted.worst().level, Health::Ok);
+    }
+
+    void theStreetsGridFindsTwoBallsOverlappingAcrossEveryCellBoundary()
+    {
+        // The street's check holds the balls in cells 2 r wide. Two balls 1.7 r apart (an
+        // overlap of 0.3 r) along each of the 26 directions to a neighbouring cell, ball A near
+        // the cell's face, corner or edge in that direction, so that B lies in the neighbour;
+        // A numbered first and then second. The check must find the overlap every time.
+        RunSpec spec = testing::spec(SceneId::Street, {"n=2"}, ModelKind::Physical);
+        const street::Layout layout = street::Layout::fromParams(spec.params);
+        const double r = 0.03, cell = 2.0 * r, overlap = 0.3 * r;
+        const Eigen::Vector3d base(std::floor(20.0 / cell), std::floor((layout.roadY(20.0) + 0.5) / cell), 0.0);
+        auto sim = makeSimulation(spec);
+        int checked = 0;
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const Eigen::Vector3d d(dx, dy, dz);
+                    if (d.squaredNorm() == 0.0)
+                        continue;
+                    const Eigen::Vector3d a = (base + Eigen::Vector3d::Constant(0.5) + 0.45 * d) * cell;
+                    const Eigen::Vector3d b = a + (2.0 * r - overlap) * d.normalized();
+                    for (int k = 0; k < 3; ++k) // B in the neighbouring cell along d
+                        QCOMPARE(std::floor(b[k] / cell) - std::floor(a[k] / cell), d[k]);
+                    for (bool aFirst : {true, false}) {
+                        State s = aFirst ? balls({a, b}) : balls({b, a});
+                        s.w.setZero(3, 2);
+                        HealthCheck h(*sim, s);
+                        h.check(s, s);
+                        const std::optional<double> found = h.figures().maxOverlap;
+                        QVERIFY2(found && std::abs(*found - overlap) <= 1e-9 * r,
+                                 qPrintable(QStringLiteral("direction (%1, %2, %3), A %4: overlap %5")
+                                                .arg(dx)
+                                                .arg(dy)
+                                                .arg(dz)
+                                                .arg(aFirst ? "first" : "second")
+                                                .arg(found.value_or(-1.0))));
+                        QVERIFY(mentions(h, "balls 0 and 1 overlap"));
+                        ++checked;
+                    }
+                }
+        QCOMPARE(checked, 52);
     }
 
     void springCompressionIsTheClosedForm()
