@@ -1708,10 +1708,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>t = %1 %2</translation>
     </message>
     <message>
-        <source>E/m = %1 %2%3/%4%3</source>
-        <translation>E/m = %1 %2%3/%4%3</translation>
-    </message>
-    <message>
         <source>E/m = -</source>
         <translation>E/m = -</translation>
     </message>
@@ -1742,10 +1738,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Kinetic plus potential energy, summed over the balls, with the height measured from the floor: per unit mass in the report model, with the masses in the physical one</source>
         <translation>Kinetisk plus potentiell energi, summerad över bollarna, med höjden räknad från golvet: per massenhet i rapportens modell, med massorna i den fysikaliska</translation>
-    </message>
-    <message>
-        <source>E = %1 kg %2%3/%4%3</source>
-        <translation>E = %1 kg %2%3/%4%3</translation>
     </message>
     <message>
         <source>E = -</source>
@@ -1802,6 +1794,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Balls on the street</source>
         <translation>Bollar på gatan</translation>
+    </message>
+    <message>
+        <source>E/m = %1 %2 a ball</source>
+        <translation>E/m = %1 %2 per boll</translation>
+    </message>
+    <message>
+        <source>Kinetic plus potential energy per unit mass, with the height measured from the floor: the mean over the %1 balls. All balls together: %2 %3, as the energy chart draws it</source>
+        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från golvet: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, som energidiagrammet ritar den</translation>
+    </message>
+    <message>
+        <source>E/m = %1 %2</source>
+        <translation>E/m = %1 %2</translation>
+    </message>
+    <message>
+        <source>E = %1 kg %2</source>
+        <translation>E = %1 kg %2</translation>
     </message>
 </context>
 <context>

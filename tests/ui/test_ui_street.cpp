@@ -3,6 +3,7 @@
 // charts draw from hand-made states, the foot-rate chart's balls per second, the street
 // drawn as road, crossings, houses and cars, its camera shots, the flood's front, the
 // report model greyed out with its reason, and the navigator's equations with numbers.
+#include "core/diagnostics/conservation.h"
 #include "core/street/street_census.h"
 #include "ui/charts/chart_data_csv.h"
 #include "ui/charts/motion_chart.h"
@@ -10,6 +11,7 @@
 #include "ui/charts/street_sample.h"
 #include "ui/panels/chart_panel.h"
 #include "ui/panels/run_options_panel.h"
+#include "ui/panels/status_readout.h"
 #include "ui/panels/street_equations.h"
 #include "ui/view/scene_geometry.h"
 #include "ui/view/street_camera.h"
@@ -20,6 +22,7 @@
 #include <QLayout>
 #include <QLineSeries>
 #include <QStandardItemModel>
+#include <QStatusBar>
 #include <QTabBar>
 #include <QtTest>
 
@@ -267,6 +270,35 @@ private slots:
         QVERIFY(reportItem(panel.modelBox(), int(ModelKind::Report))->isEnabled());
         QVERIFY(!RunOptionsPanel::reportModelOffered(SceneId::Street));
         QVERIFY(RunOptionsPanel::reportModelOffered(SceneId::ManyBalls));
+    }
+
+    void statusBarReadsTheStreetsEnergyPerBall()
+    {
+        // Four balls at rest 5 m above the foot (y = 0): E/m = g h = 9.82 x 5 = 49.1 m^2/s^2
+        // a ball, 196.4 for the four together (the energy chart's sum).
+        const RunSpec spec = streetSpec(4);
+        const auto sim = makeSimulation(spec);
+        State st = sim->start();
+        st.p.row(1).setConstant(5.0);
+        st.v.setZero();
+        st.w.setZero(3, st.size());
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        readout.setRun(spec);
+        EngineStatus status;
+        status.energy = measureConservation(*sim, st).energy.total();
+        readout.show(status);
+        const QString sq = QString::fromUtf8("\u00b2");
+        QCOMPARE(readout.energyText(), QString("E/m = 49.1 m%1/s%1 a ball").arg(sq));
+        auto* label = bar.findChild<QLabel*>("statusEnergy");
+        QVERIFY(label && label->toolTip().contains(QString("the 4 balls. All balls together: 196.4 m%1/s%1").arg(sq)));
+        // One ball is not a crowd: stage 2 reads its own energy, g h = 9.82 x 2 per unit mass.
+        RunSpec box(SceneId::Box3d);
+        readout.setRun(box);
+        status.energy = 19.64;
+        readout.show(status);
+        QCOMPARE(readout.energyText(), QString("E/m = 19.64 m%1/s%1").arg(sq));
+        QVERIFY(!label->toolTip().contains("mean"));
     }
 
     void streetIsDrawnAsRoadHousesAndCars()

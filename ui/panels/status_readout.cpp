@@ -101,8 +101,9 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     energy_ = label("statusEnergy", 190);
     step_->setToolTip(tr("Wall time of one simulation step"));
     fps_->setToolTip(tr("Frames drawn per second by the 3D view"));
-    energy_->setToolTip(tr("Kinetic plus potential energy, summed over the balls, with the height measured "
-                           "from the floor: per unit mass in the report model, with the masses in the physical one"));
+    energyTip_ = tr("Kinetic plus potential energy, summed over the balls, with the height measured "
+                    "from the floor: per unit mass in the report model, with the masses in the physical one");
+    energy_->setToolTip(energyTip_);
 }
 
 void StatusReadout::setRun(const RunSpec& spec)
@@ -146,14 +147,7 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
     const QString lengthUnit = info ? coreText(info->lengthUnit) : QString();
     time_->setText(tr("t = %1 %2").arg(QString::number(t, 'f', t < 100 ? 2 : 1), timeUnit));
     step_->setText(tr("%1 per step").arg(formatDuration(s.stepSeconds))); // "t = 855 step step 2 us" read as one
-    const QString sq = QString::fromUtf8("\u00b2");
-    const QString value = QString::number(energy, 'g', 5);
-    if (!s.energyPerUnitMass) // the physical model's masses are in kg
-        energy_->setText(std::isfinite(energy) ? tr("E = %1 kg %2%3/%4%3").arg(value, lengthUnit, sq, timeUnit)
-                                               : tr("E = -"));
-    else
-        energy_->setText(std::isfinite(energy) ? tr("E/m = %1 %2%3/%4%3").arg(value, lengthUnit, sq, timeUnit)
-                                               : tr("E/m = -"));
+    showEnergy(energy, s.energyPerUnitMass, lengthUnit, timeUnit);
     for (QLabel* reading : {time_, step_, energy_})
         fitText(reading);
     const Message m = messageFor(s, shown, back);
@@ -163,6 +157,40 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
                         : m.tone == Tone::Notice ? std::optional(Shade::Notice)
                                                  : std::nullopt);
     fitWarning();
+}
+
+long long StatusReadout::crowd() const
+{
+    // The scenes of many equal balls (stage 4, the street) set their count with `n`.
+    if (!spec_ || sceneInfo(spec_->scene).ballCount != 0 || !spec_->params.indexOf("n"))
+        return 0;
+    return spec_->params.integer("n");
+}
+
+void StatusReadout::showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit)
+{
+    const QString sq = QString::fromUtf8("\u00b2");
+    const QString unit = QStringLiteral("%1%2/%3%2").arg(lengthUnit, sq, timeUnit);
+    const long long n = crowd();
+    if (!std::isfinite(energy)) {
+        energy_->setText(perUnitMass ? tr("E/m = -") : tr("E = -"));
+    } else if (n > 2 && perUnitMass) {
+        // A crowd's sum grows with its size (10,000 balls on the street: millions of
+        // m^2/s^2); the mean a ball, sum/n, reads the same for any crowd. The energy
+        // chart draws the sum, which the tooltip gives.
+        energy_->setText(tr("E/m = %1 %2 a ball").arg(QString::number(energy / double(n), 'g', 4), unit));
+        energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, with the height measured from the "
+                               "floor: the mean over the %1 balls. All balls together: %2 %3, as the energy chart "
+                               "draws it")
+                                .arg(n)
+                                .arg(QString::number(energy, 'g', 5), unit));
+        return;
+    } else if (perUnitMass) {
+        energy_->setText(tr("E/m = %1 %2").arg(QString::number(energy, 'g', 5), unit));
+    } else { // the physical model's masses are in kg
+        energy_->setText(tr("E = %1 kg %2").arg(QString::number(energy, 'g', 5), unit));
+    }
+    energy_->setToolTip(energyTip_);
 }
 
 void StatusReadout::fitWarning()

@@ -57,11 +57,15 @@ private:
     QString streetCensus(const Frame& shown) const;
     void showDetails();
     void fitWarning(); // the headline where it fits whole, else the brief
+    // E/m (or E with the physical model's masses); for a crowd of equal balls, a ball's mean.
+    void showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit);
+    long long crowd() const; // the balls of a scene whose `n` sets them; else 0
 
     QLabel* time_;
     QLabel* step_;
     QLabel* fps_;
     QLabel* energy_;
+    QString energyTip_; // the energy's tooltip outside a crowd
     QLabel* warning_;
     QToolButton* details_;
     QFrame* popup_ = nullptr;
