@@ -1800,8 +1800,8 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>E/m = %1 %2 per boll</translation>
     </message>
     <message>
-        <source>Kinetic plus potential energy per unit mass, with the height measured from the floor: the mean over the %1 balls. All balls together: %2 %3, as the energy chart draws it</source>
-        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från golvet: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, som energidiagrammet ritar den</translation>
+        <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot: the mean over the %1 balls. All balls together: %2 %3, as the energy chart draws it</source>
+        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, som energidiagrammet ritar den</translation>
     </message>
     <message>
         <source>E/m = %1 %2</source>

@@ -6,7 +6,8 @@
 // shortened itself (Qt Charts' axes, titles and legends) shows an ellipsis. Every chart
 // page is looked at. The accuracy study and the stability suite open inside the screen.
 // The offscreen platform's screen is AB_TEST_SCREEN ("1280x720", default 1920x1080),
-// given to Qt through its configuration file (Qt 6.4's offscreen plugin reads one).
+// given to Qt through its configuration file (Qt 6.4's offscreen plugin reads one). With
+// AB_TEST_X11 set it runs on the X server it is started in (xvfb-run, a screen of that size).
 #include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
@@ -17,6 +18,7 @@
 #include <QAbstractButton>
 #include <QChart>
 #include <QChartView>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
@@ -27,6 +29,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -114,7 +117,9 @@ void checkButton(const QAbstractButton* button, QStringList& cut)
         return;
     const QFontMetrics fm(button->font());
     const int icon = button->icon().isNull() ? 0 : button->iconSize().width() + 4;
-    const int indicator = button->isCheckable() && !qobject_cast<const QPushButton*>(button) ? 20 : 0;
+    // A check box's or radio button's indicator; a checkable push or tool button has none.
+    const bool indicated = qobject_cast<const QCheckBox*>(button) || qobject_cast<const QRadioButton*>(button);
+    const int indicator = indicated ? 20 : 0;
     const int need = fm.horizontalAdvance(text) + icon + indicator + 4;
     if (need > button->width() || showsEllipsis(text))
         cut << QStringLiteral("%1: '%2' needs %3 of %4").arg(where(button), text).arg(need).arg(button->width());
@@ -447,6 +452,14 @@ private slots:
 
 int main(int argc, char** argv)
 {
+    // AB_TEST_X11: the X server the test runs in (xvfb-run with a screen of AB_TEST_SCREEN's
+    // size), whose window system lays the window out as a user's desktop does.
+    if (qEnvironmentVariableIsSet("AB_TEST_X11")) {
+        qputenv("QT_QPA_PLATFORM", "xcb");
+        QApplication app(argc, argv);
+        UiLayout test;
+        return QTest::qExec(&test, argc, argv);
+    }
     // The offscreen platform with one screen of the size asked, no window frames.
     const QSize size = screenSize();
     const QString config = QDir::temp().filePath(QStringLiteral("amazeballs-layout-%1x%2-%3.json")

@@ -116,6 +116,10 @@ void ChartPanel::addPages(QVBoxLayout* layout)
     pages_->setExpanding(false);
     pages_->setElideMode(Qt::ElideNone);
     pages_->setUsesScrollButtons(false);
+    // Whole tabs are as wide as their names: as the panel's minimum they would hold the window
+    // wider than the screen once the tabs were shown (a font grown by lecture mode, a resize),
+    // and the list below would never get its turn. The panel's width decides (paginate).
+    pages_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     pages_->hide();
     layout->addWidget(pages_);
     // Where the tabs do not fit the panel whole (the street's six charts, one a page in lecture

@@ -159,31 +159,25 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
     fitWarning();
 }
 
-long long StatusReadout::crowd() const
-{
-    // The scenes of many equal balls (stage 4, the street) set their count with `n`.
-    if (!spec_ || sceneInfo(spec_->scene).ballCount != 0 || !spec_->params.indexOf("n"))
-        return 0;
-    return spec_->params.integer("n");
-}
-
 void StatusReadout::showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit)
 {
     const QString sq = QString::fromUtf8("\u00b2");
     const QString unit = QStringLiteral("%1%2/%3%2").arg(lengthUnit, sq, timeUnit);
-    const long long n = crowd();
+    const long long n = street_ ? spec_->params.integer("n") : 0;
     if (!std::isfinite(energy)) {
         energy_->setText(perUnitMass ? tr("E/m = -") : tr("E = -"));
     } else if (n > 2 && perUnitMass) {
-        // A crowd's sum grows with its size (10,000 balls on the street: millions of
-        // m^2/s^2); the mean a ball, sum/n, reads the same for any crowd. The energy
-        // chart draws the sum, which the tooltip gives.
+        // The street's sum over 10,000 balls runs to millions of m^2/s^2, which a lecture
+        // hall cannot read; the mean a ball, sum/n, reads the same for any crowd. The
+        // energy chart draws the sum, which the tooltip gives. (Stage 4's 150 balls sum
+        // to a readable figure, and its long units leave the bar no room for "a ball".)
         energy_->setText(tr("E/m = %1 %2 a ball").arg(QString::number(energy / double(n), 'g', 4), unit));
-        energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, with the height measured from the "
-                               "floor: the mean over the %1 balls. All balls together: %2 %3, as the energy chart "
-                               "draws it")
-                                .arg(n)
-                                .arg(QString::number(energy, 'g', 5), unit));
+        energy_->setToolTip(
+            tr("Kinetic plus potential energy per unit mass, with the height measured from the "
+               "street's foot: the mean over the %1 balls. All balls together: %2 %3, as the energy chart "
+               "draws it")
+                .arg(n)
+                .arg(QString::number(energy, 'g', 5), unit));
         return;
     } else if (perUnitMass) {
         energy_->setText(tr("E/m = %1 %2").arg(QString::number(energy, 'g', 5), unit));

@@ -57,9 +57,8 @@ private:
     QString streetCensus(const Frame& shown) const;
     void showDetails();
     void fitWarning(); // the headline where it fits whole, else the brief
-    // E/m (or E with the physical model's masses); for a crowd of equal balls, a ball's mean.
+    // E/m (or E with the physical model's masses); on the street, a ball's mean.
     void showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit);
-    long long crowd() const; // the balls of a scene whose `n` sets them; else 0
 
     QLabel* time_;
     QLabel* step_;
