@@ -1811,6 +1811,18 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>E = %1 kg %2</source>
         <translation>E = %1 kg %2</translation>
     </message>
+    <message>
+        <source>%1 on the street, %2 left at the foot; fastest %3 m/s</source>
+        <translation>%1 på gatan, %2 har lämnat vid foten; snabbast %3 m/s</translation>
+    </message>
+    <message>
+        <source>%1 left at the foot; fastest %2 m/s</source>
+        <translation>%1 har lämnat vid foten; snabbast %2 m/s</translation>
+    </message>
+    <message>
+        <source>fastest %1 m/s</source>
+        <translation>snabbast %1 m/s</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StreetCameraBar</name>

@@ -24,6 +24,7 @@
 #include <QStandardItemModel>
 #include <QStatusBar>
 #include <QTabBar>
+#include <QToolButton>
 #include <QtTest>
 
 #include <cmath>
@@ -299,6 +300,50 @@ private slots:
         readout.show(status);
         QCOMPARE(readout.energyText(), QString("E/m = 19.64 m%1/s%1").arg(sq));
         QVERIFY(!label->toolTip().contains("mean"));
+    }
+
+    void statusBarCountsTheStreetInTheWordsItsWidthHolds()
+    {
+        // Five balls: three on block 1, one past its foot, one gone beyond the open foot at
+        // 50 m/s (no longer on the street: the fastest on it is 4 m/s).
+        const street::Layout s = defaultStreet();
+        const State st = stateAt(s, {10.0, 20.0, 30.0, s.blockFootX[0] + 5.0, s.xFoot + 1.0}, {1, 2, 3, 4, 50}, 0.0);
+        const Frame frame = makeFrame(0, st, ConservationSample{});
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        readout.setRun(streetSpec(5));
+        auto* label = bar.findChild<QLabel*>("statusWarning");
+        QVERIFY(label);
+        const QString whole =
+            "4 balls on the street, 2 past the first block's foot, 1 left at the foot; fastest 4.0 m/s";
+        const QStringList forms = {whole, "4 on the street, 1 left at the foot; fastest 4.0 m/s",
+                                   "1 left at the foot; fastest 4.0 m/s", "fastest 4.0 m/s"};
+        bar.show();
+        QSet<QString> seen;
+        for (const int width : {2400, 1300, 1150, 1050, 950, 850, 700}) {
+            bar.resize(width, bar.sizeHint().height());
+            readout.show(EngineStatus{}, &frame);
+            QTRY_COMPARE(label->width() > 0, true);
+            QApplication::processEvents();
+            const int room = label->contentsRect().width();
+            const QString shown = readout.warningShown();
+            QCOMPARE(readout.warningText(), whole); // Details and the tooltip have all of it
+            // The longest form that fits the label's room, whatever the room.
+            QString expected = "Balls on the street";
+            for (const QString& form : forms)
+                if (label->fontMetrics().horizontalAdvance(form) <= room) {
+                    expected = form;
+                    break;
+                }
+            QCOMPARE(shown, expected);
+            QCOMPARE(readout.detailsButton()->isVisibleTo(&bar), shown != whole);
+            seen << shown;
+        }
+        QVERIFY2(seen.size() >= 4,
+                 qPrintable(QStringList(seen.values()).join(" | "))); // the bar went through the forms
+        // A bar as wide as a desktop's shows the whole census.
+        bar.resize(2400, bar.sizeHint().height());
+        QTRY_COMPARE(readout.warningShown(), whole);
     }
 
     void streetIsDrawnAsRoadHousesAndCars()

@@ -114,7 +114,7 @@ void StatusReadout::setRun(const RunSpec& spec)
         street_ = std::make_shared<const street::Layout>(street::Layout::fromParams(spec.params));
 }
 
-QString StatusReadout::streetCensus(const Frame& shown) const
+StatusReadout::Message StatusReadout::streetCensus(const Frame& shown) const
 {
     // Counted from the frame on screen: a ball beyond the open foot has left the run.
     int left = 0, firstFoot = 0;
@@ -130,11 +130,18 @@ QString StatusReadout::streetCensus(const Frame& shown) const
         if (k + 2 < shown.v.size())
             fastest = std::max(fastest, std::hypot(double(shown.v[k]), double(shown.v[k + 1]), double(shown.v[k + 2])));
     }
-    return tr("%1 balls on the street, %2 past the first block's foot, %3 left at the foot; fastest %4 m/s")
-        .arg(shown.balls() - left)
-        .arg(firstFoot)
-        .arg(left)
-        .arg(fastest, 0, 'f', 1);
+    const QString speed = QString::number(fastest, 'f', 1);
+    const QString text =
+        tr("%1 balls on the street, %2 past the first block's foot, %3 left at the foot; fastest %4 m/s")
+            .arg(shown.balls() - left)
+            .arg(firstFoot)
+            .arg(left)
+            .arg(speed);
+    // A lecture hall's bar holds a few words: the balls gone and the fastest say most.
+    const QStringList shorter = {
+        tr("%1 on the street, %2 left at the foot; fastest %3 m/s").arg(shown.balls() - left).arg(left).arg(speed),
+        tr("%1 left at the foot; fastest %2 m/s").arg(left).arg(speed), tr("fastest %1 m/s").arg(speed)};
+    return {text, text, Tone::Plain, tr("Balls on the street"), shorter};
 }
 
 void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool lookingBack)
@@ -191,8 +198,13 @@ void StatusReadout::fitWarning()
 {
     const Message& m = message_;
     const int room = warning_->contentsRect().width();
-    const bool whole = warning_->fontMetrics().horizontalAdvance(m.headline) <= room;
-    const QString text = whole || m.brief.isEmpty() ? m.headline : m.brief;
+    const QFontMetrics fm = warning_->fontMetrics();
+    QString text = m.brief.isEmpty() ? m.headline : m.brief;
+    for (const QStringList forms = QStringList{m.headline} + m.shorter; const QString& form : forms)
+        if (fm.horizontalAdvance(form) <= room) {
+            text = form;
+            break;
+        }
     if (warning_->text() != text)
         warning_->setText(text);
     details_->setVisible(m.full != text);
@@ -237,10 +249,8 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
         const QString text = tr("The run is complete; Play starts it again");
         return {text, text, Tone::Plain, tr("The run is complete")};
     }
-    if (street_ && shown) {
-        const QString text = streetCensus(*shown);
-        return {text, text, Tone::Plain, tr("Balls on the street")};
-    }
+    if (street_ && shown)
+        return streetCensus(*shown);
     return {};
 }
 

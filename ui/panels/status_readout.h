@@ -15,6 +15,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 #include <optional>
@@ -49,14 +50,16 @@ private:
     struct Message {
         QString headline, full;
         Tone tone = Tone::Plain;
-        QString brief; // the kind of message, for a bar too narrow for the headline
+        QString brief;         // the kind of message, for a bar too narrow for the headline
+        QStringList shorter{}; // shorter forms of the headline, longest first, tried before the brief
     };
     Message messageFor(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
     std::optional<QString> reportRulesAt(const EngineStatus& s, const Frame* shown, bool lookingBack) const;
-    // The street's census of the frame shown: on the street, past the first foot, left.
-    QString streetCensus(const Frame& shown) const;
+    // The street's census of the frame shown (on the street, past the first foot, left, the
+    // fastest), whole and in two shorter forms for a narrower bar.
+    Message streetCensus(const Frame& shown) const;
     void showDetails();
-    void fitWarning(); // the headline where it fits whole, else the brief
+    void fitWarning(); // the headline where it fits whole, else the longest shorter form, else the brief
     // E/m (or E with the physical model's masses); on the street, a ball's mean.
     void showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit);
 
