@@ -3,7 +3,8 @@
 // formula (written out here, not the program's): text 4.5:1 against the background it
 // is drawn on (every palette role pair, greyed-out text included, and the charts' titles,
 // axis labels and legends); 3:1 for what is not text (field borders, the media icons as
-// painted, every chart line and the time cursor, axis lines), in each theme with and
+// painted, every chart line and the time cursor, axis lines, a checked button against
+// itself unchecked), in each theme with and
 // without the colour-blind-safe palette, for every chart of every scene, compared and not.
 #include "ui/charts/chart_style.h"
 #include "ui/charts/motion_chart.h"
@@ -17,6 +18,8 @@
 #include <QLegend>
 #include <QLineSeries>
 #include <QPainter>
+#include <QPushButton>
+#include <QToolButton>
 #include <QtTest>
 
 #include <cmath>
@@ -122,6 +125,69 @@ private slots:
             CHECK_CONTRAST("icon", strongest, button, 3.0);
         }
         ab::ui::applyToApplication({Theme::Light, false, 1.0});
+    }
+
+    void aCheckedButtonStandsApartAtThreeToOne_data() { addThemeRows(); }
+    void aCheckedButtonStandsApartAtThreeToOne()
+    {
+        // The stage buttons and the street's camera shots say which is down: the same push
+        // and tool button drawn up and down differ somewhere by 3:1 (WCAG 1.4.11).
+        QFETCH(Theme, theme);
+        ab::ui::applyToApplication({theme, false, 1.0});
+        QPushButton push(QStringLiteral("5  street"));
+        QToolButton tool;
+        tool.setText(QStringLiteral("Flood"));
+        for (QAbstractButton* button : {static_cast<QAbstractButton*>(&push), static_cast<QAbstractButton*>(&tool)}) {
+            button->setCheckable(true);
+            button->resize(160, 36);
+            button->setChecked(false);
+            const QImage up = button->grab().toImage();
+            button->setChecked(true);
+            const QImage down = button->grab().toImage();
+            QCOMPARE(up.size(), down.size());
+            double best = 1.0;
+            for (int y = 0; y < up.height(); ++y)
+                for (int x = 0; x < up.width(); ++x)
+                    best = std::max(best, ratio(up.pixelColor(x, y), down.pixelColor(x, y)));
+            QVERIFY2(best >= 3.0, qPrintable(QStringLiteral("%1: up and down differ by %2:1 at most")
+                                                 .arg(button->metaObject()->className())
+                                                 .arg(best, 0, 'f', 2)));
+        }
+        ab::ui::applyToApplication({Theme::Light, false, 1.0});
+    }
+
+    void mediaIconPixmapsHoldOnlyTheirShape()
+    {
+        // A button draws its icon from QIcon::pixmap(), not paint(): every pixel of it is
+        // either transparent or the button text's colour (antialiased edges only lower the
+        // alpha), whatever the memory the pixmap was given held before.
+        ab::ui::applyToApplication({Theme::Light, false, 1.0});
+        const QColor text = QApplication::palette().color(QPalette::ButtonText);
+        for (QStyle::StandardPixmap icon :
+             {QStyle::SP_MediaPlay, QStyle::SP_MediaPause, QStyle::SP_MediaSkipForward, QStyle::SP_MediaSkipBackward}) {
+            for (int k = 0; k < 8; ++k) { // memory of the pixmap's size, left dirty when freed
+                QImage junk(24, 24, QImage::Format_ARGB32_Premultiplied);
+                junk.fill(QColor(255, 0, 255));
+            }
+            const QImage image = QApplication::style()
+                                     ->standardIcon(icon)
+                                     .pixmap(QSize(24, 24))
+                                     .toImage()
+                                     .convertToFormat(QImage::Format_ARGB32);
+            int stray = 0, opaque = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    opaque += c.alpha() == 255 ? 1 : 0;
+                    const bool shape = std::abs(c.red() - text.red()) <= 2 && std::abs(c.green() - text.green()) <= 2 &&
+                                       std::abs(c.blue() - text.blue()) <= 2;
+                    stray += c.alpha() > 0 && !shape ? 1 : 0;
+                }
+            QVERIFY2(stray == 0,
+                     qPrintable(QStringLiteral("icon %1: %2 pixels of another colour").arg(icon).arg(stray)));
+            QVERIFY2(opaque >= 24, qPrintable(QStringLiteral("icon %1: %2 opaque pixels").arg(icon).arg(opaque)));
+            QCOMPARE(image.pixelColor(0, 0).alpha(), 0);
+        }
     }
 
     void chartTextAndLinesMeetAa_data()

@@ -2,12 +2,16 @@
 // The 3D view in a real X server (Xvfb, Mesa llvmpipe): the framebuffer shows each ball
 // in its colour where the simulation puts it, projected with the view's own camera
 // matrices, and the image is not blank; a click selects the ball under it; with keyboard
-// focus the arrow keys move the camera as the report's program does; a comparison run's
+// focus the arrow keys move the camera as the report's program does, in lecture mode too,
+// where they otherwise walk the equations; a comparison run's
 // balls are drawn ghosted beside the solid ones. Skipped where the
 // platform has no OpenGL windows (offscreen, minimal).
+#include "ui/lecture/lecture_mode.h"
 #include "ui/main_window.h"
+#include "ui/panels/stage_navigator.h"
 #include "ui/view/ball_view.h"
 
+#include <QApplication>
 #include <QGuiApplication>
 #include <QtTest>
 
@@ -130,7 +134,8 @@ private slots:
         QVERIFY(view);
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ab::ui::RunOptions o = w.options();
-        o.compare = ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::SymplecticEuler, ab::ImpactMode::Located, {}};
+        o.compare =
+            ab::RunVariant{ab::ModelKind::Physical, ab::Integrator::SymplecticEuler, ab::ImpactMode::Located, {}};
         QVERIFY(w.applyOptions(o));
         QVERIFY(view->ghostLegend().contains("solid: report"));
         QVERIFY(view->ghostLegend().contains("ghost: physical symplectic-euler"));
@@ -203,6 +208,42 @@ private slots:
         QCOMPARE(w.controller().status().steps, 0LL); // Right/Left do not reach the transport
         QTest::keyClick(view, Qt::Key_Up);            // camera.position.z -= 2
         QVERIFY(std::abs(view->camera().eye().z() - (before.z() - 2.0f)) < 1e-3f);
+    }
+
+    void inLectureModeTheViewsArrowKeysMoveTheCameraNotTheWalk()
+    {
+        // Lecture mode's Left and Right walk the equations, but once a click gave the view
+        // the keys they move the camera, as the view's hint says; Esc gives them back.
+        MainWindow& w = open(SceneId::ManyBalls);
+        ab::ui::LectureMode lecture;
+        lecture.attach(&w, w.navigator());
+        lecture.setActive(true);
+        ab::ui::StageNavigator& nav = *w.navigator();
+        ab::ui::BallView* view = w.view();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        QApplication::setActiveWindow(&w);
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::keyClick(&w, Qt::Key_Right); // the walk's first equation
+        QCOMPARE(nav.revealed(), 1);
+        view->container()->setFocus();
+        view->requestActivate();
+        QTRY_VERIFY(view->hasKeyFocus());
+        const QVector3D before = view->camera().eye();
+        for (int k = 0; k < 3; ++k)
+            QTest::keyClick(view, Qt::Key_Left); // Appendix D: x -= 2 each
+        QVERIFY(std::abs(view->camera().eye().x() - (before.x() - 6.0f)) < 1e-3f);
+        QTest::keyClick(view, Qt::Key_Right);
+        QVERIFY(std::abs(view->camera().eye().x() - (before.x() - 4.0f)) < 1e-3f);
+        QCOMPARE(nav.current(), SceneId::ManyBalls); // the walk and the stage stay
+        QCOMPARE(nav.revealed(), 1);
+        QCOMPARE(w.controller().status().steps, 0LL);
+        QTest::keyClick(view, Qt::Key_Escape); // the keys go back to the window
+        QTRY_VERIFY(!view->hasKeyFocus());
+        QTest::keyClick(&w, Qt::Key_Right);
+        QCOMPARE(nav.revealed(), 2);
+        QVERIFY(std::abs(view->camera().eye().x() - (before.x() - 4.0f)) < 1e-3f);
+        lecture.setActive(false);
     }
 };
 

@@ -5,9 +5,11 @@
 
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QGuiApplication>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QMainWindow>
+#include <QPaintDeviceWindow>
 #include <QPlainTextEdit>
 #include <QSplitter>
 #include <QTextEdit>
@@ -28,6 +30,13 @@ bool typingInFocus()
     if (auto* edit = qobject_cast<QPlainTextEdit*>(w))
         return !edit->isReadOnly();
     return false;
+}
+
+// The 3D view (an OpenGL window in its container) holds the keys after a click: its arrows
+// move the camera and its Esc gives the keys back, as the hint it draws says.
+bool viewInFocus()
+{
+    return qobject_cast<QPaintDeviceWindow*>(QGuiApplication::focusObject()) != nullptr;
 }
 
 } // namespace
@@ -163,16 +172,17 @@ LectureMode::Command LectureMode::commandFor(const QKeyEvent& key) const
     case Qt::Key_F11:
         return Command::FullScreen;
     case Qt::Key_Escape:
-        return window_ && window_->isFullScreen() ? Command::LeaveFullScreen : Command::None;
+        return window_ && window_->isFullScreen() && !viewInFocus() ? Command::LeaveFullScreen : Command::None;
     case Qt::Key_PageDown:
         return active_ ? Command::Next : Command::None;
     case Qt::Key_PageUp:
         return active_ ? Command::Previous : Command::None;
     case Qt::Key_Space:
-    case Qt::Key_Right:
         return active_ && !typingInFocus() ? Command::Next : Command::None;
+    case Qt::Key_Right:
+        return active_ && !typingInFocus() && !viewInFocus() ? Command::Next : Command::None;
     case Qt::Key_Left:
-        return active_ && !typingInFocus() ? Command::Previous : Command::None;
+        return active_ && !typingInFocus() && !viewInFocus() ? Command::Previous : Command::None;
     default:
         return Command::None;
     }

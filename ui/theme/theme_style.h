@@ -4,7 +4,9 @@
 // spin boxes, combo boxes) get a frame in the theme's field border colour (3:1 against
 // the window and the field, WCAG 1.4.11), thicker and in the link colour when they have the focus; the media
 // icons (play, pause, step, reset) are drawn in the palette's button text colour instead
-// of Fusion's fixed mid grey, which is 3:1 on white and dim on black.
+// of Fusion's fixed mid grey, which is 3:1 on white and dim on black; a button held down
+// (checked) gets a frame in the link colour, where Fusion's darker shade of a black button
+// cannot be told from it.
 #pragma once
 
 #include <QColor>
@@ -29,6 +31,7 @@ public:
 
 private:
     void drawFieldFrame(const QStyleOption* option, QPainter* painter) const;
+    void drawCheckedFrame(const QStyleOption* option, QPainter* painter) const;
 
     QColor border_{0x6b, 0x6b, 0x6b};
 };

@@ -302,9 +302,8 @@ void BallView::paintOverlay(QPainter& p)
     if (!glError_.isEmpty())
         drawHaloText(p, QPointF(12, 44 * scale_), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
     if (keyFocus_)
-        drawHaloText(p, QPointF(12, height() - 14 * scale_),
-                     tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
-                     QColor(0x30, 0x30, 0x30), Qt::AlignLeft);
+        drawBottomHint(p, size(), tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
+                       QColor(0x30, 0x30, 0x30));
 }
 
 void BallView::setPresentationScale(double scale)

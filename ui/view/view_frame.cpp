@@ -8,6 +8,8 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace ab::ui {
 
@@ -57,6 +59,18 @@ float smallestBallPixels(const SceneLayout& layout, int viewHeight, double scale
     return float(pixels * scale);
 }
 
+float footAsFloat(double xFoot)
+{
+    // The largest float not above the foot: a frame's x (a float) is beyond it exactly when,
+    // read back as a double, it is beyond the foot, as the census counts (street::hasLeft).
+    // Rounded to nearest, the foot may come out above itself, and the balls the engine retired
+    // a few micrometres past it would be drawn at the foot for ever.
+    float f = float(xFoot);
+    if (double(f) > xFoot)
+        f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+
 RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& layout, QSize size, int selected,
                                const QColor& background, double scale)
 {
@@ -82,7 +96,7 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
         // The floor cues lie on the plane y = floorY, which the sloping street is not; the
         // balls that left at the open foot are not drawn.
         in.shadows = false;
-        in.hideBeyondX = float(layout.street->xFoot);
+        in.hideBeyondX = footAsFloat(layout.street->xFoot);
     }
     return in;
 }
@@ -104,6 +118,29 @@ void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QCo
     p.setBrush(Qt::NoBrush);
     p.drawPath(path);
     p.fillPath(path, colour);
+}
+
+void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour)
+{
+    const double room = size.width() - 24.0; // 12 px margins
+    QStringList lines{text};
+    if (QFontMetricsF(p.font()).horizontalAdvance(text) > room)
+        lines = text.split(QStringLiteral("; "));
+    double widest = 0.0;
+    for (const QString& line : lines)
+        widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(line));
+    p.save();
+    if (widest > room && room > 0.0) {
+        QFont smaller = p.font();
+        smaller.setPointSizeF(std::max(6.0, smaller.pointSizeF() * room / widest));
+        p.setFont(smaller);
+    }
+    const QFontMetricsF fm(p.font());
+    const double bottom = size.height() - 0.7 * fm.height(); // the last line's middle
+    for (qsizetype k = 0; k < lines.size(); ++k)
+        drawHaloText(p, QPointF(12.0, bottom - double(lines.size() - 1 - k) * fm.height()), lines[k], colour,
+                     Qt::AlignLeft);
+    p.restore();
 }
 
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,

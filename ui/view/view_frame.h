@@ -30,6 +30,10 @@ void frameSceneCamera(OrbitCamera& camera, const SceneGeometry& geometry, const 
 // `scale` (lecture mode's presentation scale).
 float smallestBallPixels(const SceneLayout& layout, int viewHeight, double scale);
 
+// The street's foot as the renderer's float threshold: a ball whose float x is above it has
+// left (street::hasLeft of that x read back as a double).
+float footAsFloat(double xFoot);
+
 // The renderer's inputs for a view `size` logical pixels large (viewport: the caller's
 // device pixels), `selected` ringed when the scene has more than one ball; balls and
 // marks `scale` times larger (lecture mode).
@@ -38,6 +42,11 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
 
 // Text in `colour` with a white halo, readable over any part of the scene.
 void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align);
+
+// `text` along the bottom left of a view `size` large, in `colour` with a halo: on one line
+// where it fits, else a line for each of its "; " parts, the font made smaller where even
+// a part would not fit (lecture mode's large text in a narrow view).
+void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour);
 
 // The geometry's labels and, in the vertical scene, the ball's height beside it, in `font`.
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
