@@ -1186,6 +1186,58 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>foot of block %1</source>
         <translation>kvarter %1:s fot</translation>
     </message>
+    <message>
+        <source>Energy per unit mass (%1)</source>
+        <translation>Energi per massenhet (%1)</translation>
+    </message>
+    <message>
+        <source>E/m, all balls (%1)</source>
+        <translation>E/m, alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>E/m (%1)</source>
+        <translation>E/m (%1)</translation>
+    </message>
+    <message>
+        <source>E, all balls (kg %1)</source>
+        <translation>E, alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>E (kg %1)</source>
+        <translation>E (kg %1)</translation>
+    </message>
+    <message>
+        <source>Momentum per unit mass (%1)</source>
+        <translation>Rörelsemängd per massenhet (%1)</translation>
+    </message>
+    <message>
+        <source>p/m, all balls (%1)</source>
+        <translation>p/m, alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>p/m (%1)</source>
+        <translation>p/m (%1)</translation>
+    </message>
+    <message>
+        <source>p, all balls (kg %1)</source>
+        <translation>p, alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>p (kg %1)</source>
+        <translation>p (kg %1)</translation>
+    </message>
+    <message>
+        <source>Difference, %1</source>
+        <translation>Skillnad, %1</translation>
+    </message>
+    <message>
+        <source>Balls past each foot</source>
+        <translation>Bollar förbi varje fot</translation>
+    </message>
+    <message>
+        <source>Speeds on the street</source>
+        <translation>Farter på gatan</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ParameterPanel</name>
@@ -1691,6 +1743,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>No equation shown yet, %1 to come. Next shows the first.</source>
         <translation>Ingen ekvation visad än, %1 kommer. Nästa visar den första.</translation>
+    </message>
+    <message>
+        <source>All %1 equations shown: the last stage&apos;s walk is over.</source>
+        <translation>Alla %1 ekvationer visas: sista etappens genomgång är slut.</translation>
     </message>
 </context>
 <context>

@@ -208,6 +208,34 @@ private slots:
         QVERIFY(spring.title().startsWith("Energy, all balls (kg"));
     }
 
+    void aNarrowChartShortensItsTitleRatherThanCutIt()
+    {
+        // Stage 4's energy title with its long units ("unit²/frame²") is wider than a
+        // chart panel a third of a 1280-pixel window: a shorter form is drawn whole, never a
+        // title Qt Charts cut to "...".
+        auto* chart = new ab::ui::MotionChart(ab::ui::ChartKind::Energy);
+        chart->configure(ab::sceneInfo(ab::SceneId::ManyBalls), 0);
+        QChartView view(chart); // owns the chart
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QStringList seen;
+        for (int width = 900; width >= 240; width -= 7) {
+            view.resize(width, 400);
+            QCoreApplication::processEvents();
+            QStringList texts;
+            for (const QGraphicsItem* item : view.scene()->items())
+                if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t && t->isVisible())
+                    texts << t->toPlainText();
+            QVERIFY2(texts.contains(chart->title()), qPrintable(chart->title() + " among " + texts.join(" | ")));
+            for (const QString& text : texts)
+                QVERIFY2(!text.contains(QChar(0x2026)) && !text.contains("..."), qPrintable(text));
+            if (!seen.contains(chart->title()))
+                seen << chart->title();
+        }
+        QCOMPARE(seen.front(), QString::fromUtf8("Energy per unit mass, all balls (unit\u00b2/frame\u00b2)"));
+        QVERIFY2(seen.size() >= 3, qPrintable(seen.join(" | "))); // each shorter form had its turn
+    }
+
     void impactRateIsTheCountOverTheWindow()
     {
         // Impacts since the start at t = 0..6: 0, 0, 1, 1, 3, 3, 4. Over a window of 2:

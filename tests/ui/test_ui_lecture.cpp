@@ -15,9 +15,11 @@
 #include <QAbstractTextDocumentLayout>
 #include <QAction>
 #include <QApplication>
+#include <QLabel>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QMenu>
+#include <QPushButton>
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
@@ -118,6 +120,41 @@ private slots:
         QCOMPARE(w.scene(), SceneId::Box3d); // the window runs the stage, not just the text
         QCOMPARE(nav.revealed(), 0);
         QCOMPARE(shownEquations(nav), firstShown(nav, 0));
+    }
+
+    void walkEndsAtTheLastStagesLastEquation()
+    {
+        // Back goes nowhere before stage 1's first equation, Next nowhere after the street's
+        // last: each is greyed out there, and the walk says it is over rather than promise a
+        // next stage.
+        MainWindow w;
+        ab::ui::LectureMode lecture;
+        lecture.attach(&w, w.navigator());
+        lecture.setActive(true);
+        StageNavigator& nav = *w.navigator();
+        auto* back = nav.findChild<QPushButton*>("walkBack");
+        auto* next = nav.findChild<QPushButton*>("walkNext");
+        auto* progress = nav.findChild<QLabel*>("walkProgress");
+        QVERIFY(back && next && progress);
+        QCOMPARE(nav.current(), SceneId::Bounce1d);
+        QVERIFY(!back->isEnabled() && next->isEnabled());
+        w.showScene(SceneId::Street);
+        QCOMPARE(nav.current(), SceneId::Street);
+        const int count = nav.equationCount();
+        for (int k = 0; k < count; ++k) {
+            QVERIFY(next->isEnabled());
+            next->click();
+        }
+        QCOMPARE(nav.revealed(), count);
+        QVERIFY(!next->isEnabled() && back->isEnabled());
+        QVERIFY2(!progress->text().contains("next stage"), qPrintable(progress->text()));
+        QVERIFY2(progress->text().contains("over"), qPrintable(progress->text()));
+        lecture.next(); // a clicker's Next at the end changes nothing
+        QCOMPARE(nav.current(), SceneId::Street);
+        QCOMPARE(nav.revealed(), count);
+        back->click();
+        QCOMPARE(nav.revealed(), count - 1);
+        QVERIFY(next->isEnabled());
     }
 
     void walkBackRetracesTheWalkForward()

@@ -345,6 +345,20 @@ private slots:
         // A bar as wide as a desktop's shows the whole census.
         bar.resize(2400, bar.sizeHint().height());
         QTRY_COMPARE(readout.warningShown(), whole);
+        // Details, opened on a narrow bar, follow the census as the run goes on.
+        bar.resize(700, bar.sizeHint().height());
+        readout.show(EngineStatus{}, &frame);
+        QTRY_VERIFY(readout.detailsButton()->isVisible());
+        readout.detailsButton()->click();
+        auto* popup = bar.window()->findChild<QLabel*>("statusDetailsText");
+        QVERIFY(popup && popup->isVisible());
+        QCOMPARE(popup->text(), whole);
+        const State later =
+            stateAt(s, {10.0, 20.0, s.blockFootX[0] + 1.0, s.xFoot + 2.0, s.xFoot + 1.0}, {1, 2, 7, 0, 0}, 1.0);
+        const Frame next = makeFrame(1, later, ConservationSample{});
+        readout.show(EngineStatus{}, &next);
+        QCOMPARE(popup->text(),
+                 QString("3 balls on the street, 3 past the first block's foot, 2 left at the foot; fastest 7.0 m/s"));
     }
 
     void aBallCountedGoneIsNeverDrawnAndOneOnTheStreetAlwaysIs()

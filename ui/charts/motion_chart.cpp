@@ -134,6 +134,7 @@ void MotionChart::applyFonts()
     legend()->setFont(labels); // hidden, but what a theme or lecture mode scales (followLegendStyle)
     legend_->setFonts(labels, look_.font(font(), look_.captionPt));
     legend_->setSampleLength(look_.px(look_.textPt) * 2.6);
+    fitTitle();
     placeLegend();
 }
 
@@ -187,16 +188,20 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     QString names[maxLines];
     switch (kind_) {
     case ChartKind::Position:
-        setTitle(tr("Position of %1").arg(who));
+        titleForms_ = {tr("Position of %1").arg(who)};
         valueAxis_->setTitleText(tr("position (%1)").arg(length));
         break;
     case ChartKind::Velocity:
-        setTitle(tr("Velocity of %1").arg(who));
+        titleForms_ = {tr("Velocity of %1").arg(who)};
         valueAxis_->setTitleText(tr("velocity (%1/%2)").arg(length, time));
         break;
     case ChartKind::Energy:
-        setTitle(units.perUnitMass ? tr("Energy per unit mass, all balls (%1)").arg(energyUnit)
-                                   : tr("Energy, all balls (kg %1)").arg(energyUnit));
+        titleForms_ = units.perUnitMass
+                          ? QStringList{tr("Energy per unit mass, all balls (%1)").arg(energyUnit),
+                                        tr("Energy per unit mass (%1)").arg(energyUnit),
+                                        tr("E/m, all balls (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
+                          : QStringList{tr("Energy, all balls (kg %1)").arg(energyUnit),
+                                        tr("E, all balls (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)};
         valueAxis_->setTitleText(units.perUnitMass ? tr("E/m") : tr("E"));
         names[0] = units.spins ? tr("translation") : tr("kinetic");
         names[1] = tr("potential");
@@ -205,32 +210,37 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         names[4] = tr("rotation");
         break;
     case ChartKind::Momentum:
-        setTitle(units.perUnitMass ? tr("Total momentum per unit mass, all balls (%1)").arg(momentumUnit)
-                                   : tr("Total momentum, all balls (kg %1)").arg(momentumUnit));
+        titleForms_ =
+            units.perUnitMass
+                ? QStringList{tr("Total momentum per unit mass, all balls (%1)").arg(momentumUnit),
+                              tr("Momentum per unit mass (%1)").arg(momentumUnit),
+                              tr("p/m, all balls (%1)").arg(momentumUnit), tr("p/m (%1)").arg(momentumUnit)}
+                : QStringList{tr("Total momentum, all balls (kg %1)").arg(momentumUnit),
+                              tr("p, all balls (kg %1)").arg(momentumUnit), tr("p (kg %1)").arg(momentumUnit)};
         valueAxis_->setTitleText(units.perUnitMass ? tr("p/m") : tr("p"));
         break;
     case ChartKind::Activity:
-        setTitle(tr("Moving balls and impacts"));
+        titleForms_ = {tr("Moving balls and impacts")};
         valueAxis_->setTitleText(tr("moving balls"));
         rateAxis_->setTitleText(tr("impacts per %1").arg(time));
         names[0] = tr("moving balls");
         names[1] = tr("impacts per %1").arg(time);
         break;
     case ChartKind::Difference:
-        setTitle(tr("Difference in position of %1").arg(who));
+        titleForms_ = {tr("Difference in position of %1").arg(who), tr("Difference, %1").arg(who)};
         valueAxis_->setTitleText(tr("difference (%1)").arg(length));
         break;
     case ChartKind::Spin:
-        setTitle(tr("Spin of %1").arg(who));
+        titleForms_ = {tr("Spin of %1").arg(who)};
         valueAxis_->setTitleText(tr("\u03c9 (rad/%1)").arg(time));
         break;
     case ChartKind::FootRate:
-        setTitle(tr("Balls passing the foot of each block"));
+        titleForms_ = {tr("Balls passing the foot of each block"), tr("Balls past each foot")};
         valueAxis_->setTitleText(tr("balls per %1").arg(time));
         nameFeet(names, units.streetBlocks);
         break;
     case ChartKind::Speeds:
-        setTitle(tr("Speeds of the balls on the street"));
+        titleForms_ = {tr("Speeds of the balls on the street"), tr("Speeds on the street")};
         valueAxis_->setTitleText(tr("speed (%1/%2)").arg(length, time));
         names[0] = tr("10th percentile");
         names[1] = tr("median");
@@ -238,6 +248,7 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
         names[3] = tr("fastest");
         break;
     }
+    fitTitle();
     timeAxis_->setTitleText(tr("t (%1)").arg(time));
     for (int a = 0; a < maxLines; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();

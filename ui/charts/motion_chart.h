@@ -128,6 +128,7 @@ protected:
 
 private:
     void applyFonts();
+    void fitTitle(); // the longest of titleForms_ that fits the chart's width
     void applyPens();
     void restyleRunLines();
     // The drawn legend follows what a theme or lecture mode sets on QLegend (hidden: its
@@ -163,6 +164,7 @@ private:
     std::array<QLineSeries*, maxLines> overlays_{};
     std::array<QString, maxLines> baseNames_;
     QString mainName_, compareName_, who_;
+    QStringList titleForms_; // the title, then shorter forms of it, longest first
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
     bool spins_ = false; // the energy chart splits kinetic energy (ChartUnits::spins)

@@ -40,7 +40,28 @@ void MotionChart::followLegendStyle()
 void MotionChart::resizeEvent(QGraphicsSceneResizeEvent* event)
 {
     QChart::resizeEvent(event);
+    fitTitle();
     placeLegend();
+}
+
+void MotionChart::fitTitle()
+{
+    // Qt Charts cuts a title wider than the chart to "...": the longest of its forms that
+    // fits is shown instead (a narrow panel, lecture mode's font), the shortest where none
+    // does. A chart not laid out yet shows the whole title.
+    if (titleForms_.isEmpty())
+        return;
+    // Qt Charts lays the title out in the margins' room less the text document's own margins.
+    const double room = size().width() - margins().left() - margins().right() - 24.0;
+    QString shown = titleForms_.back();
+    const QFontMetricsF fm(titleFont());
+    for (const QString& form : titleForms_)
+        if (size().width() < 1.0 || fm.horizontalAdvance(form) <= room) {
+            shown = form;
+            break;
+        }
+    if (title() != shown)
+        setTitle(shown);
 }
 
 void MotionChart::setCaption(const QString& caption)

@@ -74,7 +74,9 @@ StageNavigator::StageNavigator(QWidget* parent) : QWidget(parent), buttons_(new 
 
     auto* nav = new QHBoxLayout;
     previous_ = new QPushButton;
+    previous_->setObjectName("walkBack");
     next_ = new QPushButton;
+    next_->setObjectName("walkNext");
     for (QPushButton* b : {previous_, next_})
         b->setFocusPolicy(Qt::NoFocus);
     nav->addWidget(previous_);
@@ -128,8 +130,6 @@ void StageNavigator::setCurrent(SceneId scene)
     revealed_ = 0;
     const int i = indexOf(scene);
     buttons_->button(i)->setChecked(true);
-    previous_->setEnabled(i > 0 || walking_);
-    next_->setEnabled(i + 1 < static_cast<int>(allScenes().size()) || walking_);
     showText();
 }
 
@@ -228,6 +228,11 @@ void StageNavigator::showText()
     // In the walk the run's section comes once the stage's own equations are all shown.
     const bool all = !walking_ || revealed_ >= equationCount();
     text_->setHtml(preset + describe(info, walking_ ? revealed_ : -1) + (all ? runSection_ : QString()));
+    // Back and Next go nowhere before the first stage's start and after the last one's end.
+    const int index = indexOf(current_);
+    const bool last = index + 1 >= static_cast<int>(allScenes().size());
+    previous_->setEnabled(index > 0 || (walking_ && revealed_ > 0));
+    next_->setEnabled(!last || (walking_ && revealed_ < equationCount()));
     progress_->setVisible(walking_);
     if (!walking_)
         return;
@@ -235,7 +240,8 @@ void StageNavigator::showText()
     progress_->setText(revealed_ == 0 ? tr("No equation shown yet, %1 to come. Next shows the first.").arg(count)
                        : revealed_ < count
                            ? tr("Equation %1 of %2. Next shows the next equation.").arg(revealed_).arg(count)
-                           : tr("All %1 equations shown. Next opens the next stage.").arg(count));
+                       : last ? tr("All %1 equations shown: the last stage's walk is over.").arg(count)
+                              : tr("All %1 equations shown. Next opens the next stage.").arg(count));
     keepInSight();
 }
 

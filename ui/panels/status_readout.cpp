@@ -159,6 +159,8 @@ void StatusReadout::show(const EngineStatus& s, const Frame* shown, bool looking
         fitText(reading);
     const Message m = messageFor(s, shown, back);
     message_ = m;
+    if (popup_ && popup_->isVisible() && m.full != popup_->findChild<QLabel*>("statusDetailsText")->text())
+        placeDetails(); // open Details follow the moment shown (the street's census)
     warning_->setToolTip(m.full);
     setColour(warning_, m.tone == Tone::Severe   ? std::optional(Shade::Severe)
                         : m.tone == Tone::Notice ? std::optional(Shade::Notice)
@@ -312,6 +314,12 @@ void StatusReadout::showDetails()
         text->setTextInteractionFlags(Qt::TextSelectableByMouse);
         layout->addWidget(text);
     }
+    placeDetails();
+    popup_->show();
+}
+
+void StatusReadout::placeDetails()
+{
     auto* text = popup_->findChild<QLabel*>("statusDetailsText");
     text->setText(message_.full);
     QWidget* window = warning_->window();
@@ -321,7 +329,6 @@ void StatusReadout::showDetails()
     popup_->setFixedHeight(popup_->layout()->totalHeightForWidth(width));
     const QPoint corner = warning_->mapToGlobal(QPoint(0, 0));
     popup_->move(corner.x(), corner.y() - popup_->height() - 4);
-    popup_->show();
 }
 
 void StatusReadout::setFrameRate(double fps)

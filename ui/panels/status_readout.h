@@ -59,7 +59,8 @@ private:
     // fastest), whole and in two shorter forms for a narrower bar.
     Message streetCensus(const Frame& shown) const;
     void showDetails();
-    void fitWarning(); // the headline where it fits whole, else the longest shorter form, else the brief
+    void placeDetails(); // the Details popup's text, size and place, above the message
+    void fitWarning();   // the headline where it fits whole, else the longest shorter form, else the brief
     // E/m (or E with the physical model's masses); on the street, a ball's mean.
     void showEnergy(double energy, bool perUnitMass, const QString& lengthUnit, const QString& timeUnit);
 
