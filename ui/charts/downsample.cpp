@@ -42,11 +42,12 @@ void appendColumn(const std::vector<double>& t, const std::vector<double>& y, st
 
 } // namespace
 
-QList<QPointF> downsampleMinMax(const std::vector<double>& t, const std::vector<double>& y, int columns)
+QList<QPointF> downsampleMinMax(const std::vector<double>& t, const std::vector<double>& y, int columns,
+                                std::size_t count)
 {
     if (t.size() != y.size())
         throw std::logic_error("downsampleMinMax: series of different lengths");
-    const std::size_t n = t.size();
+    const std::size_t n = std::min(t.size(), count);
     const std::size_t cols = static_cast<std::size_t>(std::max(columns, 1));
     QList<QPointF> out;
     if (n <= 4 * cols) {

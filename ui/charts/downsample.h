@@ -7,11 +7,15 @@
 #include <QList>
 #include <QPointF>
 
+#include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace ab::ui {
 
 // At most about 4 * `columns` points of (t[i], y[i]); all of them when that many or fewer.
-QList<QPointF> downsampleMinMax(const std::vector<double>& t, const std::vector<double>& y, int columns);
+// Only the first `count` samples where fewer are asked for.
+QList<QPointF> downsampleMinMax(const std::vector<double>& t, const std::vector<double>& y, int columns,
+                                std::size_t count = std::numeric_limits<std::size_t>::max());
 
 } // namespace ab::ui

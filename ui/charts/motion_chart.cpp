@@ -396,8 +396,11 @@ void MotionChart::drawTrack(const MotionTrack& track, int columns, const std::ar
         setTimeSpan(track.t().back());
     else
         applyTimeRange(); // the plot may have been resized since
+    // The selected ball's own lines end where it left the run (the street's foot).
+    const bool ballsOwn = kind_ == ChartKind::Position || kind_ == ChartKind::Velocity || kind_ == ChartKind::Spin;
+    const std::size_t count = ballsOwn ? track.ballSamples() : track.size();
     for (int a : shownAxes_) {
-        const QList<QPointF> points = downsampleMinMax(track.t(), column(track, a), columns);
+        const QList<QPointF> points = downsampleMinMax(track.t(), column(track, a), columns, count);
         if (!points.isEmpty()) {
             const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
                                                       [](const QPointF& l, const QPointF& r) { return l.y() < r.y(); });

@@ -35,6 +35,7 @@ template <typename F> void MotionTrack::forEachColumn(F&& f)
 void MotionTrack::clear()
 {
     stride_ = 1;
+    goneStep_ = kNotGone;
     forEachColumn([](auto& column) { column.clear(); });
 }
 
@@ -85,6 +86,18 @@ void MotionTrack::truncateFrom(long long step)
 {
     const auto kept = static_cast<std::size_t>(std::lower_bound(step_.begin(), step_.end(), step) - step_.begin());
     forEachColumn([kept](auto& column) { column.resize(kept); });
+    if (goneStep_ >= step)
+        goneStep_ = kNotGone; // the run goes on from before the ball left
+}
+
+void MotionTrack::markBallGone(long long step)
+{
+    goneStep_ = std::min(goneStep_, step);
+}
+
+std::size_t MotionTrack::ballSamples() const
+{
+    return static_cast<std::size_t>(std::lower_bound(step_.begin(), step_.end(), goneStep_) - step_.begin());
 }
 
 void MotionTrack::thin()

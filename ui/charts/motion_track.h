@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace ab::ui {
@@ -35,6 +36,12 @@ public:
 
     // Drops every sample of step `step` and later (a run forked back to that step).
     void truncateFrom(long long step);
+    // The ball has left the run (the street's open foot) by step `step`, which comes next or
+    // came before: its own lines end there. The first call counts.
+    void markBallGone(long long step);
+    // The samples before the ball left, all of them while it has not: its position,
+    // velocity and spin are drawn from these; the scene's columns from all.
+    std::size_t ballSamples() const;
 
     std::size_t size() const { return t_.size(); }
     bool empty() const { return t_.empty(); }
@@ -68,6 +75,8 @@ private:
 
     std::size_t capacity_;
     long long stride_ = 1;
+    long long goneStep_ = kNotGone;
+    static constexpr long long kNotGone = std::numeric_limits<long long>::max();
     std::vector<long long> step_;
     std::vector<double> t_;
     std::array<std::vector<double>, 3> p_, v_, w_, momentum_;

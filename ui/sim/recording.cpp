@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "recording.h"
 
+#include "core/street/street_census.h"
+
 #include <algorithm>
 
 namespace ab::ui {
@@ -51,6 +53,8 @@ void Recording::add(long long step, const State& s)
     const Eigen::Index b = trackedBall_;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
     const StreetSample street = layout_.street ? measureStreet(*layout_.street, s) : StreetSample{}; // two more
+    if (layout_.street && street::hasLeft(*layout_.street, s.p(0, b)))
+        track_.markBallGone(step);
     track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene, street);
     orientations_.follow(s); // every step: the balls turn between the kept frames too
     if (step % frameStride_ != 0)
@@ -96,6 +100,8 @@ void Recording::setTrackedBall(int ball)
         const auto i = static_cast<std::size_t>(3 * ball);
         const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);
         const Eigen::Vector3d v(f.v[i], f.v[i + 1], f.v[i + 2]);
+        if (layout_.street && street::hasLeft(*layout_.street, p.x())) // as the census counts a frame
+            track_.markBallGone(f.step);
         track_.add(f.step, f.t, p, v, f.spin(ball), f.scene, f.street);
     }
 }
