@@ -63,8 +63,10 @@ set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${AMAZEBALLS_PACKAGE_MAINTAINER}")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# Qt 6.4 on a Wayland session needs its Wayland plugin (else it falls back to XWayland).
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland")
+# Qt 6.4 on a Wayland session needs its Wayland plugin (else it falls back to XWayland);
+# Qt's own words in the Swedish window (key names in the menus: "Mellanslag", "Höger"; the
+# file dialogs' buttons) come from Qt's translations.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland, qt6-translations-l10n")
 set(CPACK_SOURCE_GENERATOR TXZ)
 set(CPACK_SOURCE_IGNORE_FILES "/\\\\.git/" "/build[^/]*/")
 include(CPack)

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
-  qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libeigen3-dev libgl-dev
+  qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n libeigen3-dev libgl-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev nlohmann-json3-dev
   xvfb xauth libgl1-mesa-dri fontconfig fonts-dejavu-core
   appstream desktop-file-utils dpkg-dev poppler-utils libcli11-dev groff-base zsh)

@@ -297,6 +297,17 @@ private slots:
         QCOMPARE(w.controller().spec().params.real("k"), before); // nothing applied
     }
 
+    void swedishMenusNameTheKeysInSwedish()
+    {
+        // The Run menu's shortcuts are named by Qt's own translation (the setup script
+        // installs Qt's translations): "Mellanslag", "Höger", not "Space", "Right".
+        ab::ui::installLanguage(Language::Swedish);
+        QCOMPARE(QKeySequence(Qt::Key_Space).toString(QKeySequence::NativeText), QString("Mellanslag"));
+        QCOMPARE(QKeySequence(Qt::Key_Right).toString(QKeySequence::NativeText), QString::fromUtf8("Höger"));
+        ab::ui::installLanguage(Language::English);
+        QCOMPARE(QKeySequence(Qt::Key_Space).toString(QKeySequence::NativeText), QString("Space"));
+    }
+
     void localeChoosesTheLanguage()
     {
         QCOMPARE(ab::ui::languageForLocale(QLocale(QLocale::Swedish, QLocale::Sweden)), Language::Swedish);
