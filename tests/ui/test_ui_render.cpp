@@ -6,6 +6,7 @@
 // where they otherwise walk the equations; a comparison run's
 // balls are drawn ghosted beside the solid ones. Skipped where the
 // platform has no OpenGL windows (offscreen, minimal).
+#include "ui/charts/scene_layout.h"
 #include "ui/lecture/lecture_mode.h"
 #include "ui/main_window.h"
 #include "ui/panels/stage_navigator.h"
@@ -208,6 +209,35 @@ private slots:
         QCOMPARE(w.controller().status().steps, 0LL); // Right/Left do not reach the transport
         QTest::keyClick(view, Qt::Key_Up);            // camera.position.z -= 2
         QVERIFY(std::abs(view->camera().eye().z() - (before.z() - 2.0f)) < 1e-3f);
+    }
+
+    void aViewMadeSmallerFramesTheWholeBoxAgain()
+    {
+        // A view made smaller draws itself again with the whole box framed for its new shape.
+        // (X exposes a window made larger, not one made smaller: the view asks for the frame
+        // itself. A resize from inside Qt, as here, gets a frame either way; one from the
+        // window manager, which left a cut picture, is not reproduced by this test.)
+        MainWindow& w = open(SceneId::ManyBalls);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        QTest::qWait(200); // nothing else asks for a frame from here on
+        QSignalSpy painted(view, &ab::ui::BallView::framePainted);
+        w.resize(900, 600);
+        QTRY_VERIFY(view->width() < 600);
+        QTRY_VERIFY_WITH_TIMEOUT(painted.count() >= 1, 5000);
+        const Eigen::AlignedBox3d box = ab::ui::layoutFor(ab::RunSpec(SceneId::ManyBalls)).region;
+        for (int k = 0; k < 8; ++k) {
+            const Eigen::Vector3d c = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k));
+            const QPointF at = projectWithCamera(*view, QVector3D(float(c.x()), float(c.y()), float(c.z())));
+            QVERIFY2(at.x() >= 0 && at.y() >= 0 && at.x() <= view->width() && at.y() <= view->height(),
+                     qPrintable(QStringLiteral("corner %1 at (%2, %3) in %4x%5")
+                                    .arg(k)
+                                    .arg(at.x())
+                                    .arg(at.y())
+                                    .arg(view->width())
+                                    .arg(view->height())));
+        }
     }
 
     void inLectureModeTheViewsArrowKeysMoveTheCameraNotTheWalk()

@@ -77,6 +77,7 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
         l->setObjectName(QString::fromLatin1(name));
         l->setProperty("baseWidth", width);
         l->setMinimumWidth(width);
+        l->setContentsMargins(8, 0, 0, 0); // readings wider than their base width stay apart
         bar->addPermanentWidget(l);
         return l;
     };

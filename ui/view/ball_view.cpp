@@ -73,6 +73,7 @@ void BallView::resizeGL(int, int)
 {
     if (!cameraMoved_)
         framePending_ = true; // keep the whole scene in view until the user moves the camera
+    update();                 // a window made smaller is not exposed again: its old picture, cut, would stay
 }
 
 void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, std::vector<unsigned> colours,
