@@ -8,6 +8,7 @@
 #include "ui/charts/chart_data_csv.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/motion_track.h"
+#include "ui/charts/nice_ticks.h"
 #include "ui/panels/chart_panel.h"
 
 #include <QChartView>
@@ -206,6 +207,39 @@ private slots:
         spring.configure(ab::sceneInfo(ab::SceneId::Bounce1d), 0, ab::ui::ChartUnits{false, true});
         QVERIFY(spring.line(3)->isVisible());
         QVERIFY(spring.title().startsWith("Energy, all balls (kg"));
+    }
+
+    void millionsOnAnAxisAreWrittenOutNotInENotation()
+    {
+        // The street's 10,000 balls 70 m up hold E/m = 10,000 x 9.82 x 61.5 = 6.04e6 m^2/s^2:
+        // the axis reads 0, 2000000, ... 8000000 ("%g" wrote "6e+06"); small values keep "%g".
+        QCOMPARE(QString(ab::ui::tickLabelFormat(2e6, 8e6)), QString("%.0f"));
+        QCOMPARE(QString(ab::ui::tickLabelFormat(0.5, 2.5)), QString("%g"));
+        QCOMPARE(QString(ab::ui::tickLabelFormat(5e5, 9e5)), QString("%g"));
+        auto* chart = new ab::ui::MotionChart(ab::ui::ChartKind::Energy);
+        chart->configure(ab::sceneInfo(ab::SceneId::Street), 0, ab::ui::ChartUnits{true, false, true});
+        chart->setTimeSpan(30);
+        ab::ui::MotionTrack track;
+        for (int k = 0; k <= 10; ++k) {
+            ab::ConservationSample sample;
+            sample.energy.potential = 6.04e6 - 1e5 * k; // m g h falling as the flood comes down
+            sample.energy.kinetic = 1e5 * k;
+            track.add(k, double(k), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), sample);
+        }
+        chart->showTrack(track, 600);
+        QChartView view(chart); // owns the chart
+        view.resize(700, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QCoreApplication::processEvents();
+        QCOMPARE(chart->valueAxis()->labelFormat(), QString("%.0f"));
+        QStringList labels;
+        for (const QGraphicsItem* item : view.scene()->items())
+            if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t && t->isVisible())
+                labels << t->toPlainText();
+        QVERIFY2(labels.contains("6000000"), qPrintable(labels.join(" | ")));
+        for (const QString& l : labels)
+            QVERIFY2(!l.contains("e+"), qPrintable(l));
     }
 
     void aNarrowChartShortensItsTitleRatherThanCutIt()

@@ -32,6 +32,7 @@ void setNiceRange(QValueAxis* axis, double lo, double hi, int ticks)
     const double bottom = std::floor(lo / step) * step, top = std::ceil(hi / step) * step;
     axis->setTickType(QValueAxis::TicksFixed);
     axis->setTickCount(std::max(2, int(std::lround((top - bottom) / step)) + 1));
+    axis->setLabelFormat(tickLabelFormat(step, std::max(std::abs(bottom), std::abs(top))));
     axis->setRange(bottom, top);
 }
 

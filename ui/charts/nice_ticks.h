@@ -21,4 +21,12 @@ inline double niceTickStep(double span, int ticks)
     return 10.0 * decade;
 }
 
+// A printf format for tick labels `step` apart up to `largest` in size: "%g", except that
+// whole steps past a million are written out ("6000000", not "%g"'s "6e+06", which a
+// lecture hall does not read as six million).
+inline const char* tickLabelFormat(double step, double largest)
+{
+    return largest >= 1e6 && largest < 1e12 && step >= 1.0 && step == std::floor(step) ? "%.0f" : "%g";
+}
+
 } // namespace ab::ui
