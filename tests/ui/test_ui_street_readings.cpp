@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the window reads off the street (stage 5) as it runs, without OpenGL: the status
 // bar's energy a ball and its census in the words the bar's width holds (Details following
-// it), the selected ball's own lines ending where it leaves at the foot, and a ball the
-// census counts gone never drawn (the view's float threshold).
+// it), the selected ball's own lines ending where it leaves at the foot, a ball the census
+// counts gone never drawn (the view's float threshold), and the view's labels read whole.
 #include "support/street_states.h"
 
 #include "core/diagnostics/conservation.h"
@@ -11,11 +11,15 @@
 #include "ui/charts/scene_layout.h"
 #include "ui/panels/status_readout.h"
 #include "ui/sim/recording.h"
+#include "ui/view/orbit_camera.h"
+#include "ui/view/scene_geometry.h"
 #include "ui/view/view_frame.h"
 
 #include <QApplication>
+#include <QImage>
 #include <QLabel>
 #include <QLineSeries>
+#include <QPainter>
 #include <QSet>
 #include <QStatusBar>
 #include <QToolButton>
@@ -157,6 +161,40 @@ private slots:
         QCOMPARE(recording.track().ballSamples(), std::size_t(3));
         recording.add(3, stateAt(s, {s.xFoot - 3.0, 10.0}, {10.0, 1.0}, 0.3));
         QCOMPARE(recording.track().ballSamples(), std::size_t(4));
+    }
+
+    void aLabelAtTheViewsEdgeIsMovedInWhole()
+    {
+        // The side shot puts the foot's label at the view's bottom edge: drawn centred on its
+        // point, half of it would fall outside. Moved in, every pixel of its red text lies
+        // inside with the halo's margin: the rows touching the edges hold none.
+        const QSize size(600, 300);
+        OrbitCamera camera;
+        camera.frame({0, 0, 0}, {10, 10, 10}, 0.0f, 0.0f, float(size.width()) / float(size.height()));
+        QVector3D at(5, 5, 5);
+        QPointF pixel;
+        for (float y = 5.0f; y > -50.0f; y -= 0.01f) // down to the last point still in view
+            if (QPointF p; camera.project({5, y, 5}, size, p) && p.y() <= size.height() - 1.0)
+                at.setY(y), pixel = p;
+        QVERIFY(pixel.y() > size.height() - 3.0);
+        SceneGeometry geometry;
+        geometry.labels.push_back({at, QStringLiteral("foot"), QColor(0xd0, 0, 0)});
+        QImage image(size, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        QFont font;
+        font.setPointSizeF(14.0);
+        paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
+        painter.end();
+        int top = size.height(), bottom = -1;
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x)
+                if (const QColor c = image.pixelColor(x, y); c.red() > 150 && c.green() < 100 && c.blue() < 100)
+                    top = std::min(top, y), bottom = std::max(bottom, y);
+        QVERIFY(bottom >= 0); // drawn
+        QVERIFY2(bottom <= size.height() - 3, qPrintable(QStringLiteral("red text down to row %1").arg(bottom)));
+        QVERIFY2(bottom - top >= QFontMetrics(font).ascent() / 2,
+                 qPrintable(QStringLiteral("%1 rows").arg(bottom - top)));
     }
 
     void aBallCountedGoneIsNeverDrawnAndOneOnTheStreetAlwaysIs()

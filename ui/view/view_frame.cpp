@@ -153,10 +153,13 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
     for (const SceneLabel& label : geometry.labels) {
         if (!camera.project(label.at, size, at) || at.x() < 0.0 || at.x() > size.width())
             continue;
-        // A label whose point is in view is read whole: moved in from the edge it would cross.
-        const double half = fm.horizontalAdvance(label.text) / 2.0 + 3.0;
+        // A label whose point is in view is read whole: moved in from the edge it would cross
+        // (drawn centred on its point, across and up and down).
+        const double half = fm.horizontalAdvance(label.text) / 2.0 + 3.0, halfHigh = fm.height() / 2.0 + 3.0;
         at.setX(
             std::clamp(at.x(), std::min(half, size.width() / 2.0), std::max(size.width() - half, size.width() / 2.0)));
+        at.setY(std::clamp(at.y(), std::min(halfHigh, size.height() / 2.0),
+                           std::max(size.height() - halfHigh, size.height() / 2.0)));
         drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
     }
     // The vertical scene reads its height off the scale: label the ball with it.
