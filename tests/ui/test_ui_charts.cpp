@@ -20,6 +20,21 @@
 #include <cmath>
 #include <limits>
 
+namespace {
+
+// The texts a chart view draws (tick labels, axis titles, the chart's title), as drawn:
+// Qt Charts' own cut to "..." included.
+QStringList shownTexts(const QChartView& view)
+{
+    QStringList texts;
+    for (const QGraphicsItem* item : view.scene()->items())
+        if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t && t->isVisible())
+            texts << t->toPlainText();
+    return texts;
+}
+
+} // namespace
+
 class UiCharts : public QObject {
     Q_OBJECT
 
@@ -78,10 +93,7 @@ private slots:
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
         QCoreApplication::processEvents();
-        QStringList labels;
-        for (const QGraphicsItem* item : view.scene()->items())
-            if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item))
-                labels << t->toPlainText();
+        const QStringList labels = shownTexts(view);
         QVERIFY2(labels.contains(QStringLiteral("0")), qPrintable(labels.join(" | ")));
         QVERIFY2(labels.contains(QStringLiteral("-0.5")), qPrintable(labels.join(" | ")));
         for (const QString& l : labels)
@@ -233,10 +245,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&view));
         QCoreApplication::processEvents();
         QCOMPARE(chart->valueAxis()->labelFormat(), QString("%.0f"));
-        QStringList labels;
-        for (const QGraphicsItem* item : view.scene()->items())
-            if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t && t->isVisible())
-                labels << t->toPlainText();
+        const QStringList labels = shownTexts(view);
         QVERIFY2(labels.contains("6000000"), qPrintable(labels.join(" | ")));
         for (const QString& l : labels)
             QVERIFY2(!l.contains("e+"), qPrintable(l));
@@ -256,10 +265,7 @@ private slots:
         for (int width = 900; width >= 240; width -= 7) {
             view.resize(width, 400);
             QCoreApplication::processEvents();
-            QStringList texts;
-            for (const QGraphicsItem* item : view.scene()->items())
-                if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t && t->isVisible())
-                    texts << t->toPlainText();
+            const QStringList texts = shownTexts(view);
             QVERIFY2(texts.contains(chart->title()), qPrintable(chart->title() + " among " + texts.join(" | ")));
             for (const QString& text : texts)
                 QVERIFY2(!text.contains(QChar(0x2026)) && !text.contains("..."), qPrintable(text));

@@ -53,10 +53,10 @@ void MotionChart::fitTitle()
         return;
     // Qt Charts lays the title out in the margins' room less the text document's own margins.
     const double room = size().width() - margins().left() - margins().right() - 24.0;
-    QString shown = titleForms_.back();
+    QString shown = size().width() < 1.0 ? titleForms_.front() : titleForms_.back();
     const QFontMetricsF fm(titleFont());
     for (const QString& form : titleForms_)
-        if (size().width() < 1.0 || fm.horizontalAdvance(form) <= room) {
+        if (fm.horizontalAdvance(form) <= room) {
             shown = form;
             break;
         }

@@ -79,6 +79,18 @@ private:
     QStyle::StandardPixmap kind_;
 };
 
+// A rounded frame `width` wide just inside `rect`, antialiased.
+void strokeFrame(QPainter* painter, const QRectF& rect, const QColor& colour, double width)
+{
+    painter->save();
+    painter->setRenderHint(QPainter::Antialiasing);
+    painter->setBrush(Qt::NoBrush);
+    painter->setPen(QPen(colour, width));
+    const double inset = width / 2.0;
+    painter->drawRoundedRect(rect.adjusted(inset, inset, -inset, -inset), 2.0, 2.0);
+    painter->restore();
+}
+
 } // namespace
 
 ThemeStyle::ThemeStyle() : QProxyStyle(QStyleFactory::create(QStringLiteral("Fusion")))
@@ -95,14 +107,7 @@ void ThemeStyle::drawFieldFrame(const QStyleOption* option, QPainter* painter) c
     QColor colour = focus ? option->palette.color(QPalette::Link) : border_;
     if (!enabled)
         colour = option->palette.color(QPalette::Disabled, QPalette::Text);
-    const double width = focus ? 2.0 : 1.0;
-    painter->save();
-    painter->setRenderHint(QPainter::Antialiasing);
-    painter->setBrush(Qt::NoBrush);
-    painter->setPen(QPen(colour, width));
-    const double inset = width / 2.0;
-    painter->drawRoundedRect(QRectF(option->rect).adjusted(inset, inset, -inset, -inset), 2.0, 2.0);
-    painter->restore();
+    strokeFrame(painter, option->rect, colour, focus ? 2.0 : 1.0);
 }
 
 void ThemeStyle::drawPrimitive(PrimitiveElement element, const QStyleOption* option, QPainter* painter,
@@ -124,12 +129,7 @@ void ThemeStyle::drawCheckedFrame(const QStyleOption* option, QPainter* painter)
     // colour (3:1 on the window in every theme, as the focus frame) says which is down.
     const QColor colour = option->state & State_Enabled ? option->palette.color(QPalette::Link)
                                                         : option->palette.color(QPalette::Disabled, QPalette::Text);
-    painter->save();
-    painter->setRenderHint(QPainter::Antialiasing);
-    painter->setBrush(Qt::NoBrush);
-    painter->setPen(QPen(colour, 2.0));
-    painter->drawRoundedRect(QRectF(option->rect).adjusted(1.5, 1.5, -1.5, -1.5), 2.0, 2.0);
-    painter->restore();
+    strokeFrame(painter, QRectF(option->rect).adjusted(0.5, 0.5, -0.5, -0.5), colour, 2.0);
 }
 
 void ThemeStyle::drawComplexControl(ComplexControl control, const QStyleOptionComplex* option, QPainter* painter,

@@ -123,12 +123,13 @@ void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QCo
 void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour)
 {
     const double room = size.width() - 24.0; // 12 px margins
+    const QFontMetricsF asSet(p.font());
     QStringList lines{text};
-    if (QFontMetricsF(p.font()).horizontalAdvance(text) > room)
+    if (asSet.horizontalAdvance(text) > room)
         lines = text.split(QStringLiteral("; "));
     double widest = 0.0;
     for (const QString& line : lines)
-        widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(line));
+        widest = std::max(widest, asSet.horizontalAdvance(line));
     p.save();
     if (widest > room && room > 0.0) {
         QFont smaller = p.font();
@@ -155,11 +156,12 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
             continue;
         // A label whose point is in view is read whole: moved in from the edge it would cross
         // (drawn centred on its point, across and up and down).
-        const double half = fm.horizontalAdvance(label.text) / 2.0 + 3.0, halfHigh = fm.height() / 2.0 + 3.0;
-        at.setX(
-            std::clamp(at.x(), std::min(half, size.width() / 2.0), std::max(size.width() - half, size.width() / 2.0)));
-        at.setY(std::clamp(at.y(), std::min(halfHigh, size.height() / 2.0),
-                           std::max(size.height() - halfHigh, size.height() / 2.0)));
+        // Within [half, extent - half], or the middle where the view is narrower than the label.
+        auto inside = [](double v, double half, double extent) {
+            return std::clamp(v, std::min(half, extent / 2.0), std::max(extent - half, extent / 2.0));
+        };
+        at.setX(inside(at.x(), fm.horizontalAdvance(label.text) / 2.0 + 3.0, size.width()));
+        at.setY(inside(at.y(), fm.height() / 2.0 + 3.0, size.height()));
         drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
     }
     // The vertical scene reads its height off the scale: label the ball with it.
