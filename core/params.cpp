@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "params.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace ab {
 
@@ -24,6 +26,11 @@ std::string quoted(std::string_view s)
 }
 
 } // namespace
+
+bool anyReportDefault(const std::vector<ParamSpec>& table)
+{
+    return std::any_of(table.begin(), table.end(), [](const ParamSpec& p) { return p.reportDefault(); });
+}
 
 namespace {
 
@@ -107,6 +114,20 @@ std::string formatSignificant(double x, int digits)
     char buf[64];
     const auto end = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, digits);
     return std::string(buf, end.ptr);
+}
+
+std::string formatStep(double dt)
+{
+    // The shortest text that reads back is no longer than six significant digits': it has
+    // six digits or fewer.
+    const std::string shortest = formatNumber(dt);
+    if (formatSignificant(dt, 6).size() >= shortest.size())
+        return shortest;
+    // dt = 1/k: k = round(1/dt), and k dt is 1 to round-off (a few ulps of 1).
+    const double k = std::round(1.0 / dt);
+    if (k >= 2.0 && k < 1e9 && std::abs(k * dt - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon())
+        return "1/" + formatNumber(k);
+    return formatSignificant(dt, 6);
 }
 
 std::string formatNumber(double x)

@@ -38,7 +38,14 @@ struct ParamSpec {
     unsigned models = BothModels;
 
     bool usedBy(unsigned model) const { return (models & model) != 0; }
+    // The default is the report's value: a constant of the report's own model. The physical
+    // model's own constants (friction, the spring floor) and the street's, which the report
+    // never reached, have this program's defaults.
+    bool reportDefault() const { return usedBy(ReportModel); }
 };
+
+// Whether any of a table's constants is the report's (every stage but the street).
+bool anyReportDefault(const std::vector<ParamSpec>& table);
 
 // Values for one scene's table, in table order. Built from the defaults, changed only
 // through set()/parse(), which validate, so a ParamValues is always in range.
@@ -97,6 +104,10 @@ std::optional<Refusal> checkRefusal(const ParamSpec& spec, const Eigen::Vector3d
 // representation that reads back exactly.
 std::string formatValue(const ParamSpec& spec, const Eigen::Vector3d& value);
 std::string formatNumber(double x);
+// A time step for a reader (a figure's caption): formatNumber where that takes at most six
+// significant digits ("0.01"), else "1/k" where dt is 1/k to round-off ("1/60" for
+// 0.016666666666666666), else six significant digits.
+std::string formatStep(double dt);
 // `digits` significant digits for messages ("34.58", "1.2e-05"), whatever the locale.
 std::string formatSignificant(double x, int digits);
 std::string formatRange(const ParamSpec& spec);

@@ -29,6 +29,11 @@ struct State {
     // Impacts since the start, ball-wall and ball-ball, each pair contact once (filled by
     // the many-balls models, report and physical; the charts' impacts per unit of time).
     long long impacts = 0;
+    // Energy per unit mass that balls took with them out of the run (the street's open foot):
+    // each one's kinetic, rotational and potential energy at the end of the step it passed
+    // the foot in, summed since the start. The balls that left stay past the foot at rest and
+    // count for nothing else. 0 in every other scene.
+    double energyLeft = 0.0;
     // The report's bounce limit was reached: from here on the report zeroes the state.
     bool halted = false;
 

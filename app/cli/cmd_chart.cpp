@@ -126,7 +126,8 @@ ui::MotionTrack simulate(Simulation& sim, long long steps, int ball, std::ostrea
     ui::MotionTrack track;
     long long index = 0;
     bool healthy = true;
-    // The street's charts (foot rate, speeds) read its layout at every state.
+    // The street's charts (foot rate, speeds) read its layout at every state, and the
+    // selected ball's lines end where it leaves at the foot.
     const std::optional<street::Layout> layout = sim.spec().scene == SceneId::Street
                                                      ? std::optional(street::Layout::fromParams(sim.spec().params))
                                                      : std::nullopt;
@@ -136,11 +137,7 @@ ui::MotionTrack simulate(Simulation& sim, long long steps, int ball, std::ostrea
             healthy = healthy && s.p.allFinite() && s.v.allFinite();
             if (!healthy)
                 return;
-            if (layout)
-                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s),
-                          ui::measureStreet(*layout, s));
-            else
-                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s));
+            ui::addState(track, index++, s, ball, meter.measure(s), layout ? &*layout : nullptr);
         },
         [&] { return !healthy || interrupted(); });
     throwIfInterrupted();

@@ -2,6 +2,7 @@
 #include "conservation.h"
 
 #include "../physical/physical_simulation.h"
+#include "../street/street_census.h"
 
 #include <cmath>
 
@@ -71,6 +72,8 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
                (spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street)) {
         spinInertia_ = spec.params.real("inertia") * spec.params.real("r") * spec.params.real("r"); // I/m = q r^2
     }
+    if (spec.scene == SceneId::Street)
+        footX_ = street::Layout::fromParams(spec.params).xFoot;
     // "Moving": faster than the speed that would lift the ball by h = r/100 against
     // gravity (1/2 v^2 = g h, so v = sqrt(2 g h)), a rise no one sees. It lies below the
     // physical model's rest speed sqrt(2 g h_rest) at the default h_rest = 0.02 r, so a
@@ -88,7 +91,7 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
 
 ConservationSample ConservationMeter::measure(const State& s) const
 {
-    ConservationSample out = world_ ? measureWorld(s) : measureEqualMasses(s);
+    ConservationSample out = world_ ? measureWorld(s) : footX_ ? measureStreet(s) : measureEqualMasses(s);
     out.impacts = s.impacts;
     return out;
 }
@@ -145,6 +148,32 @@ ConservationSample ConservationMeter::measureEqualMasses(const State& s) const
         // the spring's share is what is left after gravity's g y.
         out.energy.spring = m * (spring_->potential(y[0]) - spring_->g * y[0]);
     }
+    return out;
+}
+
+ConservationSample ConservationMeter::measureStreet(const State& s) const
+{
+    // Per unit mass, the balls on the street only: E_k = sum (|v|^2 + q r^2 |w|^2) / 2,
+    // E_p = g sum y (the foot at y = 0), p = sum v. A ball past the foot has left the run
+    // (street::hasLeft): what it took is State::energyLeft, counted once, as it left.
+    const double moving2 = movingSpeed_ * movingSpeed_;
+    const bool turning = spinInertia_ > 0.0 && s.spins();
+    double v2sum = 0.0, w2sum = 0.0, heights = 0.0;
+    ConservationSample out;
+    for (int i = 0; i < s.size(); ++i) {
+        if (s.p(0, i) > *footX_)
+            continue;
+        const double v2 = s.v.col(i).squaredNorm();
+        v2sum += v2;
+        w2sum += turning ? s.w.col(i).squaredNorm() : 0.0;
+        heights += s.p(1, i) - floor_;
+        out.momentum += s.v.col(i);
+        out.moving += v2 > moving2 ? 1 : 0;
+    }
+    out.energy.rotation = 0.5 * spinInertia_ * w2sum;
+    out.energy.kinetic = 0.5 * v2sum + out.energy.rotation;
+    out.energy.potential = g_ * heights;
+    out.energy.left = s.energyLeft;
     return out;
 }
 

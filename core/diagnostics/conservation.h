@@ -31,7 +31,8 @@ struct EnergyParts {
     double potential = 0.0; // sum of m g (y - floor)
     double spring = 0.0;    // stored in the spring floor (bounce1d, physical, contact 1 or 2); else 0
     double rotation = 0.0;  // the rotational part of `kinetic`, sum of 1/2 I |w|^2 (0 without spin)
-    double total() const { return kinetic + potential + spring; }
+    double left = 0.0;      // taken out of the run by the balls that left it (State::energyLeft); else 0
+    double total() const { return kinetic + potential + spring + left; }
     double translation() const { return kinetic - rotation; } // sum of 1/2 m |v|^2
 };
 
@@ -60,6 +61,8 @@ public:
 private:
     ConservationSample measureWorld(const State& s) const;
     ConservationSample measureEqualMasses(const State& s) const;
+    // The street: the balls on it as measureEqualMasses does, those that left as State::energyLeft.
+    ConservationSample measureStreet(const State& s) const;
 
     std::vector<double> mass_; // empty: unit masses
     double g_ = 0.0;
@@ -70,6 +73,7 @@ private:
     std::optional<physical::SpringFloor> spring_;
     const physical::World* world_ = nullptr; // the physical model's, when the simulation has one (not owned)
     double spinInertia_ = 0.0;               // q r^2 of many-balls' turning balls (docs/spin.md); 0 elsewhere
+    std::optional<double> footX_;            // the street's open foot (street::hasLeft); none elsewhere
     bool turns_ = false;
 };
 

@@ -83,8 +83,12 @@ HealthCheck::Impl::Impl(const Simulation& s, const State& start)
 double HealthCheck::Impl::energy(const State& s) const
 {
     const bool turning = spinInertia > 0.0 && s.w.cols() == s.size();
-    double e = 0.0;
+    // On the street a ball past the foot has left the run: what it took with it is
+    // State::energyLeft (its energy at the step's end it left in), counted once.
+    double e = s.energyLeft;
     for (int i = 0; i < s.size(); ++i) {
+        if (streetLayout && street::hasLeft(*streetLayout, s.p(0, i)))
+            continue;
         const double m = static_cast<std::size_t>(i) < mass.size() ? mass[static_cast<std::size_t>(i)] : 1.0;
         const double spin = turning ? 0.5 * spinInertia * s.w.col(i).squaredNorm() : 0.0;
         e += m * (0.5 * s.v.col(i).squaredNorm() + spin + potential(s.p(1, i)));

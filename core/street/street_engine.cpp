@@ -85,13 +85,14 @@ void Engine::load(const State& s)
         maxSpeed2 = std::max(maxSpeed2, b.v.squaredNorm());
     }
     maxSpeed_ = std::sqrt(maxSpeed2);
+    energyLeft_ = s.energyLeft;
     covered_ = 0.0; // no contact has looked ahead from this state yet
     loaded_ = true;
 }
 
 bool Engine::holds(const State& s) const
 {
-    if (!loaded_ || s.size() != settings_.n || !s.spins())
+    if (!loaded_ || s.size() != settings_.n || !s.spins() || s.energyLeft != energyLeft_)
         return false;
     for (int k = 0; k < settings_.n; ++k) {
         const Ball& b = balls_[static_cast<std::size_t>(k)];
@@ -116,6 +117,7 @@ void Engine::store(State& s) const
         s.v.col(i) = b.v;
         s.w.col(i) = b.w;
     }
+    s.energyLeft = energyLeft_;
 }
 
 int Engine::substepsFor(double dt) const
@@ -221,11 +223,16 @@ void Engine::sortByColumn()
 
 void Engine::retire()
 {
-    // Balls whose centres passed the open foot leave the run, at rest where they are.
+    // Balls whose centres passed the open foot leave the run, at rest where they are, and
+    // take their energy per unit mass with them (State::energyLeft): |v|^2 / 2 + q r^2 |w|^2 / 2
+    // (I = q m r^2, docs/spin.md) + g y, the foot at y = 0 (street_layout.h). Summed in slot
+    // order, which is the same for any thread count.
+    const double spinInertia = settings_.inertia * settings_.radius * settings_.radius;
     std::erase_if(active_, [&](int i) {
         Ball& b = balls_[static_cast<std::size_t>(i)];
         if (!hasLeft(layout_, b.p.x()))
             return false;
+        energyLeft_ += 0.5 * b.v.squaredNorm() + 0.5 * spinInertia * b.w.squaredNorm() + settings_.g * b.p.y();
         b.v.setZero();
         b.w.setZero();
         support_[static_cast<std::size_t>(i)] = FaceRef{};

@@ -209,8 +209,9 @@ private:
     std::vector<long long> workerImpacts_;
     long long impacts_ = 0;
     double maxSpeed_ = 0.0;
-    double covered_ = 0.0; // how far ahead the last contact phase looked for pairs that meet
-    bool loaded_ = false;  // a state was loaded: the balls are a run's
+    double energyLeft_ = 0.0; // State::energyLeft: what the balls that left took with them
+    double covered_ = 0.0;    // how far ahead the last contact phase looked for pairs that meet
+    bool loaded_ = false;     // a state was loaded: the balls are a run's
 };
 
 std::unique_ptr<Simulation> makeStreet(const RunSpec& spec, double dt);

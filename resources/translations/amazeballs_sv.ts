@@ -306,6 +306,14 @@
         <source>dashed: closed form</source>
         <translation>streckad: sluten form</translation>
     </message>
+    <message>
+        <source>%1 = %2 (default: %3)</source>
+        <translation>%1 = %2 (standard: %3)</translation>
+    </message>
+    <message>
+        <source>the default constants</source>
+        <translation>standardkonstanterna</translation>
+    </message>
 </context>
 <context>
     <name>SceneGeometry</name>
@@ -1238,6 +1246,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Speeds on the street</source>
         <translation>Farter på gatan</translation>
     </message>
+    <message>
+        <source>left at the foot</source>
+        <translation>lämnat vid foten</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ParameterPanel</name>
@@ -1264,6 +1276,22 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Not applied: %1</source>
         <translation>Inte tillämpat: %1</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Källa:</translation>
+    </message>
+    <message>
+        <source>Default:</source>
+        <translation>Standardvärde:</translation>
+    </message>
+    <message>
+        <source>Default values</source>
+        <translation>Standardvärden</translation>
+    </message>
+    <message>
+        <source>Restore every constant of this stage to its default</source>
+        <translation>Återställ varje konstant i denna etapp till dess standardvärde</translation>
     </message>
 </context>
 <context>
@@ -1856,10 +1884,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>E/m = %1 %2 per boll</translation>
     </message>
     <message>
-        <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot: the mean over the %1 balls. All balls together: %2 %3, as the energy chart draws it</source>
-        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, som energidiagrammet ritar den</translation>
-    </message>
-    <message>
         <source>E/m = %1 %2</source>
         <translation>E/m = %1 %2</translation>
     </message>
@@ -1878,6 +1902,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>fastest %1 m/s</source>
         <translation>snabbast %1 m/s</translation>
+    </message>
+    <message>
+        <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot, and what the balls that left at the foot took with them: the mean over the %1 balls. All balls together: %2 %3, the energy chart&apos;s total</source>
+        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot, och det som bollarna som lämnat vid foten tog med sig: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, energidiagrammets totala</translation>
     </message>
 </context>
 <context>
@@ -3174,10 +3202,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>En boll som rullar nedför ett kvarter: 5/7-regeln i en backe</translation>
     </message>
     <message>
-        <source>One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = 0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street.</source>
-        <translation>En boll som sätts ned på ett kvarter med 17 graders lutning utan studs (e = 0). När den har landat håller friktionen (mu = 0.5, mer än q tan(theta)/(1 + q) = 0.087) den rullande utan glidning: den accelererar med a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 grader = 2.051 m/s^2, inte med de 2.871 m/s^2 som en boll som glider utan friktion får, och r w = v hela vägen (ekv. St1). Hastighetsdiagrammet stiger i en rät linje; vid foten, 80 m längre ned, rullar den med ungefär 18 m/s och lämnar gatan.</translation>
-    </message>
-    <message>
         <source>Sony&apos;s advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper over the top of three 17 deg blocks, with restitution 0.85 and grippy rubber (mu = 0.6, beta = 0.4). Seen from the foot of the hill the flood comes down the first block within 5 s and jumps at each crossing; the speed distribution widens as the front pulls away.</source>
         <translation>Sonys reklamfilm släppte 250 000 superbollar nedför en gata i San Francisco. Här faller de från behållaren ovanför krönet av tre kvarter med 17 graders lutning, med studskoefficient 0.85 och greppigt gummi (mu = 0.6, beta = 0.4). Sedd från backens fot kommer floden nedför första kvarteret inom 5 s och hoppar vid varje korsning; fartfördelningen breddas när fronten drar ifrån.</translation>
     </message>
@@ -3196,6 +3220,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>The report&apos;s basic idea (chapter 3.1): balls bouncing down a steep street like Sony&apos;s advert, set going by gravity and slope. 10,000 balls of 3 cm drop from a hopper over the top of a 17 deg street (a 31 % grade) of three 80 m blocks with flat crossings between them. They land, roll and bounce down block 1 (a rolling ball gains 5/7 g sin 17 deg = 2.05 m/s^2), jump where each crossing ends, and leave at the foot; the balls-per-second chart counts them past each block&apos;s foot.</source>
         <translation>Rapportens grundidé (kapitel 3.1): bollar som studsar nedför en brant gata som i Sonys reklamfilm, satta i rörelse av gravitation och lutning. 10 000 bollar på 3 cm faller från en behållare ovanför krönet av en gata med 17 graders lutning (31 % stigning) och tre kvarter på 80 m med plana korsningar emellan. De landar, rullar och studsar nedför kvarter 1 (en rullande boll ökar farten med 5/7 g sin 17 grader = 2.05 m/s^2), hoppar där varje korsning slutar och lämnar gatan vid foten; diagrammet med bollar per sekund räknar dem förbi varje kvarters fot.</translation>
+    </message>
+    <message>
+        <source>One ball set down without rebound (e = 0) on a 17 deg block, 48.7 m up the road from the foot (the hopper&apos;s lowest site). Once it has landed, friction (mu = 0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a straight line; after t = v/a = 6.9 s it reaches the foot at v = sqrt(2 a d) = sqrt(2 x 2.051 x 48.7) = 14.1 m/s and leaves the street.</source>
+        <translation>En boll som sätts ned utan studs (e = 0) på ett kvarter med 17 graders lutning, 48.7 m upp längs vägen från foten (behållarens lägsta plats). När den har landat håller friktionen (mu = 0.5, mer än q tan(theta)/(1 + q) = 0.087) den rullande utan glidning: den accelererar med a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 grader = 2.051 m/s^2, inte med de 2.871 m/s^2 som en boll som glider utan friktion får, och r w = v hela vägen (ekv. St1). Hastighetsdiagrammet stiger i en rät linje; efter t = v/a = 6.9 s når den foten med v = sqrt(2 a d) = sqrt(2 x 2.051 x 48.7) = 14.1 m/s och lämnar gatan.</translation>
     </message>
 </context>
 <context>

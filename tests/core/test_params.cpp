@@ -160,6 +160,22 @@ private slots:
         QCOMPARE(ab::formatNumber(0.6), std::string("0.6"));
     }
 
+    void aStepReadsAsAReaderWritesIt()
+    {
+        // Six significant digits or fewer as they are; one over a whole number as a fraction
+        // (1/60 and 1/240 are 0.016666666666666666 and 0.004166666666666667 in full); anything
+        // else to six digits.
+        QCOMPARE(ab::formatStep(0.01), std::string("0.01"));
+        QCOMPARE(ab::formatStep(1e-5), std::string("1e-05"));
+        QCOMPARE(ab::formatStep(0.25), std::string("0.25"));
+        QCOMPARE(ab::formatStep(1.0 / 60.0), std::string("1/60"));
+        QCOMPARE(ab::formatStep(1.0 / 240.0), std::string("1/240"));
+        QCOMPARE(ab::formatStep(1.0 / 3.0), std::string("1/3"));
+        QCOMPARE(ab::formatStep(0.0166667), std::string("0.0166667"));
+        QCOMPARE(ab::formatStep(0.01234567891), std::string("0.0123457"));
+        QCOMPARE(ab::formatStep(1.0 / 60.0 + 1e-12), std::string("0.0166667")); // not 1/60 to round-off
+    }
+
     void printableInputIsOneShortLine()
     {
         // Controls escaped so that no terminal sequence passes; quotes left as they are.
@@ -170,7 +186,8 @@ private slots:
         QCOMPARE(ab::printableInput(std::string(100, 'x')), std::string(80, 'x') + "\xE2\x80\xA6");
         QCOMPARE(ab::printableInput(std::string(100, 'x'), 40), std::string(40, 'x') + "\xE2\x80\xA6");
         // Characters, not bytes, are counted: never cut inside a character's UTF-8 bytes.
-        QCOMPARE(ab::printableInput(std::string(79, 'x') + "\xC3\xA9yz"), std::string(79, 'x') + "\xC3\xA9\xE2\x80\xA6");
+        QCOMPARE(ab::printableInput(std::string(79, 'x') + "\xC3\xA9yz"),
+                 std::string(79, 'x') + "\xC3\xA9\xE2\x80\xA6");
     }
 
     void startOutsideTheBoxIsRefused()

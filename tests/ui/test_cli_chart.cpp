@@ -10,6 +10,7 @@
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -111,6 +112,43 @@ private slots:
                      .status,
                  0);
         QVERIFY(!QImage(two).isNull());
+    }
+
+    void theOneBallsVelocityEndsWhereItLeavesAtTheFoot()
+    {
+        // street-one-ball leaves the street at t = 6.9 s (its description, St1) within its 8 s:
+        // its velocity's cells end there, as the window's lines do, with no drop to rest, and
+        // the speeds end with the last ball on the street.
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("one.csv");
+        const Result r = cli({"chart", "street", "--preset", "street-one-ball", "--chart", "velocity", "--out",
+                              dir.filePath("one.svg").toStdString(), "--data", csv.toStdString()});
+        QCOMPARE(r.status, 0);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QStringList rows;
+        for (const QString& line : QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts))
+            if (!line.startsWith('#'))
+                rows << line;
+        const QStringList header = rows.takeFirst().split(',');
+        const int vx = int(header.indexOf("vx [m/s]")), median = int(header.indexOf("speed_median [m/s]"));
+        QVERIFY(vx > 0 && median > 0);
+        double lastT = -1.0, lastSpeed = 0.0;
+        int empty = 0;
+        for (const QString& row : rows) {
+            const QStringList cells = row.split(',');
+            QCOMPARE(cells[vx].isEmpty(), cells[median].isEmpty()); // one ball: it is the street's last
+            if (cells[vx].isEmpty()) {
+                ++empty;
+                continue;
+            }
+            QCOMPARE(empty, 0); // once gone, gone
+            lastT = cells[0].toDouble();
+            lastSpeed = cells[median].toDouble();
+        }
+        QVERIFY2(std::abs(lastT - 6.9) < 0.05, qPrintable(QString::number(lastT)));
+        QVERIFY2(std::abs(lastSpeed - 14.1) < 0.1, qPrintable(QString::number(lastSpeed)));
+        QVERIFY(empty > 60); // the second after it left, and more
     }
 
     void badInputExitsWith2AndWritesNothing_data()

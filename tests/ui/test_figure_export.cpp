@@ -246,6 +246,25 @@ private slots:
         QVERIFY(!b.contains("report: 0.9"));
     }
 
+    void theStreetsConstantsAreNamedItsDefaultsNotTheReports()
+    {
+        // The report never reached the street: its constants are the program's defaults, and
+        // the street's step of 1/60 s reads as a reader writes it.
+        QTemporaryDir dir;
+        const QString svg = dir.filePath("street.svg"), csv = dir.filePath("street.csv");
+        QCOMPARE(cli({"chart", "street", "--chart", "energy", "--steps", "3", "--set", "n=40", "--caption", "--out",
+                      svg.toStdString(), "--data", csv.toStdString()})
+                     .status,
+                 0);
+        const QByteArray caption = readAll(svg), data = readAll(csv);
+        QVERIFY(caption.simplified().contains("n = 40") && caption.contains("(default: 10000)")); // wrapped between
+        QVERIFY(caption.contains("dt = 1/60 s"));
+        QVERIFY(!caption.contains("report:"));
+        QVERIFY(data.contains("# constant n = 40 (the default: 10000)\n"));
+        QVERIFY(data.contains("# constant slope = 17 deg (the default value)\n"));
+        QVERIFY(!data.contains("the report's"));
+    }
+
     void theChartDataCsvHasTheClosedFormTheComparisonAndTheSettings()
     {
         QTemporaryDir dir;

@@ -283,7 +283,7 @@ private slots:
         w.showScene(SceneId::Box3d);
         const double before = w.controller().spec().params.real("k");
         auto* k = w.findChild<QLineEdit*>(QStringLiteral("param-k"));
-        auto* error = w.findChild<QLabel*>(QStringLiteral("parameterError"));
+        auto* error = w.findChild<QLabel*>(QStringLiteral("paramError-k")); // under its field
         QVERIFY(k && error);
         const QStringList typed{QStringLiteral("5"), QStringLiteral("abc")};
         const QStringList expected{QStringLiteral("k: 5 ligger utanför det tillåtna intervallet"),

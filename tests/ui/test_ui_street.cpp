@@ -11,6 +11,7 @@
 #include "ui/charts/scene_layout.h"
 #include "ui/charts/street_sample.h"
 #include "ui/panels/chart_panel.h"
+#include "ui/panels/parameter_panel.h"
 #include "ui/panels/run_options_panel.h"
 #include "ui/panels/street_equations.h"
 #include "ui/view/scene_geometry.h"
@@ -20,7 +21,9 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLayout>
+#include <QLineEdit>
 #include <QLineSeries>
+#include <QPushButton>
 #include <QStandardItemModel>
 #include <QTabBar>
 #include <QtTest>
@@ -134,24 +137,59 @@ private slots:
         StreetSample sample;
         sample.pastFoot = {7, 3, 1, 0, 0};
         sample.speed = {0.5, 2.0, 6.5, 11.25};
-        track.add(0, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                  ConservationSample{}, sample);
+        sample.onStreet = 5;
+        ConservationSample scene;
+        scene.energy.left = 1234.5;
+        const Eigen::Vector3d p(1.0, 2.0, 3.0), v(4.0, 5.0, 6.0);
+        track.add(0, 0.0, p, v, Eigen::Vector3d::Zero(), scene, sample);
+        // Then the selected ball and the last on the street leave at the foot: the ball's own
+        // cells and the speeds' are empty, not a ball at rest at the foot or speeds of 0.
+        track.markBallGone(1);
+        sample.pastFoot = {12, 12, 12, 0, 0};
+        sample.speed = {};
+        sample.onStreet = 0;
+        scene.energy.left = 2000.0;
+        track.add(1, 0.5, Eigen::Vector3d(99.0, 0.03, 0.0), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), scene,
+                  sample);
         ChartData data;
         data.run = &track;
         data.streetBlocks = 3;
         std::ostringstream out;
         writeChartCsv(out, data);
         std::istringstream lines(out.str());
-        std::string header, row;
+        std::string header, row, gone;
         std::getline(lines, header);
         std::getline(lines, row);
+        std::getline(lines, gone);
         QVERIFY(header.ends_with(",past_foot_1 [balls],past_foot_2 [balls],past_foot_3 [balls],speed_p10 [m/s],"
-                                 "speed_median [m/s],speed_p90 [m/s],speed_max [m/s]"));
-        QVERIFY(row.ends_with(",7,3,1,0.5,2,6.5,11.25"));
+                                 "speed_median [m/s],speed_p90 [m/s],speed_max [m/s],energy_left [m^2/s^2]"));
+        QVERIFY(row.starts_with("0,1,1,2,3,4,5,6,"));
+        QVERIFY(row.ends_with(",7,3,1,0.5,2,6.5,11.25,1234.5"));
+        QVERIFY2(gone.starts_with("0.5,1,,,,,,,"), gone.c_str());
+        QVERIFY2(gone.ends_with(",12,12,12,,,,,2000"), gone.c_str());
         data.streetBlocks = 0; // another stage: no street columns
         std::ostringstream plain;
         writeChartCsv(plain, data);
         QVERIFY(plain.str().find("past_foot") == std::string::npos);
+    }
+
+    void theStreetsConstantsRestoreToItsDefaultsNotTheReports()
+    {
+        // The report never reached the street: its button and tooltips name the defaults.
+        ParameterPanel panel;
+        const SceneInfo& street = sceneInfo(SceneId::Street);
+        panel.setScene(street, ModelKind::Physical, street.defaults());
+        auto* restore = panel.findChild<QPushButton*>("reportValues");
+        QVERIFY(restore);
+        QCOMPARE(restore->text(), QString("Default values"));
+        const QString tip = panel.field("slope")->toolTip();
+        QVERIFY2(tip.contains("Default: 17") && !tip.contains("Report"), qPrintable(tip));
+        // Stage 2 is the report's: its g, and its button, are the report's; its friction is not.
+        const SceneInfo& box = sceneInfo(SceneId::Box3d);
+        panel.setScene(box, ModelKind::Physical, box.defaults());
+        QCOMPARE(restore->text(), QString("Report values"));
+        QVERIFY(panel.field("g")->toolTip().contains("Report value: 9.82"));
+        QVERIFY(panel.field("mu")->toolTip().contains("Default: 0"));
     }
 
     void streetChartsBelongToTheStreetOnly()
@@ -179,6 +217,32 @@ private slots:
             QVERIFY2(panel.chartView(kind)->height() >= 200, chartKey(kind).data());
         }
         QVERIFY(!panel.chartShown(ChartKind::Activity) || !panel.chartView(ChartKind::Activity)->isVisible());
+    }
+
+    void theCurrentChartIsOneOnThePageShown()
+    {
+        // "Export current chart" exports the chart last pointed at only while its page is
+        // shown: pointed at on one page, another page shown, it is that page's first chart.
+        ChartPanel panel;
+        panel.resize(600, 330); // one chart a page
+        ChartUnits units;
+        units.streetBlocks = 3;
+        panel.configure(sceneInfo(SceneId::Street), 10, 0, 30.0, units);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QCOMPARE_GT(panel.pages()->count(), 2);
+        panel.pages()->setCurrentIndex(1);
+        ChartKind pointed = panel.currentChart();
+        QVERIFY(panel.onCurrentPage(pointed));
+        QTest::mouseClick(panel.chartView(pointed)->viewport(), Qt::LeftButton);
+        QCOMPARE(panel.currentChart(), pointed);
+        panel.pages()->setCurrentIndex(0);
+        const ChartKind now = panel.currentChart();
+        QVERIFY(now != pointed);
+        QVERIFY(panel.onCurrentPage(now));
+        QCOMPARE(now, panel.shownCharts().front());
+        panel.pages()->setCurrentIndex(1);
+        QCOMPARE(panel.currentChart(), pointed);
     }
 
     void chartPagesWhoseTabsDoNotFitAreChosenFromAList()

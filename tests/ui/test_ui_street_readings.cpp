@@ -7,6 +7,7 @@
 
 #include "core/diagnostics/conservation.h"
 #include "core/street/street_census.h"
+#include "ui/charts/chart_legend.h"
 #include "ui/charts/motion_chart.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/panels/status_readout.h"
@@ -161,6 +162,54 @@ private slots:
         QCOMPARE(recording.track().ballSamples(), std::size_t(3));
         recording.add(3, stateAt(s, {s.xFoot - 3.0, 10.0}, {10.0, 1.0}, 0.3));
         QCOMPARE(recording.track().ballSamples(), std::size_t(4));
+    }
+
+    void theEnergyChartsTotalKeepsWhatTheBallsTookOutAtTheFoot()
+    {
+        // One elastic superball (e = beta = 1, sticking friction) rolls and bounces off one
+        // block of 30 deg: nothing is lost, so the total stays at the start's g h + v^2 / 2 while
+        // the energy moves into "left at the foot" as the ball leaves; the street keeps none.
+        RunSpec spec = streetSpec(1);
+        for (const char* a : {"blocks=1", "slope=30", "e=1", "beta=1", "mu=10", "rest_height=0"}) {
+            const std::string text(a);
+            const auto eq = text.find('=');
+            spec.params.parse(text.substr(0, eq), text.substr(eq + 1));
+        }
+        const auto sim = makeSimulation(spec);
+        const ConservationMeter meter(*sim);
+        const street::Layout layout = street::Layout::fromParams(spec.params);
+        Recording recording(layoutFor(spec), meter, 0);
+        State s = sim->start(), next;
+        recording.add(0, s);
+        int after = 0;
+        for (long long k = 1; k < 1200 && after < 10; ++k) {
+            sim->step(s, next);
+            std::swap(s, next);
+            recording.add(k, s);
+            after += street::hasLeft(layout, s.p(0, 0)) ? 1 : 0;
+        }
+        QCOMPARE(after, 10);
+        MotionChart chart(ChartKind::Energy);
+        ChartUnits units{true, false, true};
+        units.streetBlocks = 1;
+        chart.configure(sceneInfo(SceneId::Street), 0, units);
+        chart.setTimeSpan(s.t);
+        chart.showTrack(recording.track(), 600);
+        QCOMPARE(chart.shownAxes(), (std::vector<int>{0, 4, 1, 5, 2}));
+        QStringList names;
+        for (const LegendEntry& e : chart.legendEntries())
+            names << e.text;
+        QVERIFY2(names.contains("left at the foot"), qPrintable(names.join(", ")));
+        const QList<QPointF> total = chart.line(2)->points(), left = chart.line(5)->points();
+        const QList<QPointF> potential = chart.line(1)->points();
+        QVERIFY(total.size() > 100 && total.size() == left.size());
+        const double e0 = total.front().y();
+        for (const QPointF& p : total)
+            QVERIFY2(std::abs(p.y() - e0) <= 1e-9 * e0,
+                     qPrintable(QString("t = %1: %2 against %3").arg(p.x()).arg(p.y()).arg(e0)));
+        QCOMPARE(left.front().y(), 0.0);
+        QVERIFY(std::abs(left.back().y() - e0) <= 1e-9 * e0);
+        QCOMPARE(potential.back().y(), 0.0);
     }
 
     void aLabelAtTheViewsEdgeIsMovedInWhole()

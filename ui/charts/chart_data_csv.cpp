@@ -69,9 +69,11 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
         }
         for (int block : feet)
             out << "," << prefix << "past_foot_" << block + 1 << " [balls]";
-        if (d.streetBlocks > 0)
+        if (d.streetBlocks > 0) {
             for (const char* c : {"speed_p10", "speed_median", "speed_p90", "speed_max"})
                 out << "," << prefix << c << " [" << u.speed << "]";
+            out << "," << prefix << "energy_left [" << u.energy << "]";
+        }
     };
     out << "t [" << u.t << "],ball";
     header("");
@@ -87,11 +89,17 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
     }
     out << "\n";
     Writer w(out);
+    // The ball's own cells are empty once it has left at the street's foot (where the engine
+    // holds it at rest, out of the run), the speeds' once no ball is left on the street.
     auto row = [&](const MotionTrack& m, std::size_t i) {
-        for (int a : shown)
-            w.put(m.p(a)[i]);
-        for (int a : shown)
-            w.put(m.v(a)[i]);
+        const bool ballHere = i < m.ballSamples();
+        for (int part = 0; part < 2; ++part)
+            for (int a : shown) {
+                if (ballHere)
+                    w.put(part == 0 ? m.p(a)[i] : m.v(a)[i]);
+                else
+                    w.empty(1);
+            }
         w.put(m.energy()[i]);
         w.put(m.kinetic()[i]);
         w.put(m.potential()[i]);
@@ -101,21 +109,30 @@ void writeChartCsv(std::ostream& out, const ChartData& d)
         w.put(static_cast<long long>(m.moving()[i]));
         w.put(m.impacts()[i]);
         if (d.spins) {
-            for (int a = 0; a < 3; ++a)
-                w.put(m.w(a)[i]);
+            for (int a = 0; a < 3; ++a) {
+                if (ballHere)
+                    w.put(m.w(a)[i]);
+                else
+                    w.empty(1);
+            }
             w.put(m.translation()[i]);
             w.put(m.rotation()[i]);
         }
         for (std::size_t k = 0; k < feet.size(); ++k)
             w.put(static_cast<long long>(m.pastFoot(int(k))[i]));
-        if (d.streetBlocks > 0)
-            for (int k = 0; k < kSpeedLines; ++k)
-                w.put(m.speed(k)[i]);
+        if (d.streetBlocks > 0) {
+            if (i < m.streetSamples())
+                for (int k = 0; k < kSpeedLines; ++k)
+                    w.put(m.speed(k)[i]);
+            else
+                w.empty(kSpeedLines);
+            w.put(m.left()[i]);
+        }
     };
     const MotionTrack& run = *d.run;
     const MotionTrack* compare = d.comparison;
     const std::size_t compareColumns = 1 + 2 * shown.size() + 9 + (d.spins ? 5 : 0) + feet.size() +
-                                       (d.streetBlocks > 0 ? std::size_t(kSpeedLines) : 0);
+                                       (d.streetBlocks > 0 ? std::size_t(kSpeedLines) + 1 : 0);
     std::size_t j = 0; // the comparison's last sample at or before the row's time
     for (std::size_t i = 0; i < run.size(); ++i) {
         const double t = run.t()[i];

@@ -12,10 +12,10 @@ namespace {
 // x, y, z in the colours of the 3D view's axis triad.
 const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x77, 0xb4)};
 // Kinetic (of translation where the balls turn), potential, total, spring, rotation (a
-// deeper red beside translation's orange: the two parts of the kinetic energy); and the
-// activity chart's two lines.
-const QColor energyColours[5] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
-                                 QColor(0x8c, 0x56, 0x4b), QColor(0xc0, 0x39, 0x2b)};
+// deeper red beside translation's orange: the two parts of the kinetic energy), what left
+// the street (a slate grey: energy out of the scene); and the activity chart's two lines.
+const QColor energyColours[6] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
+                                 QColor(0x8c, 0x56, 0x4b), QColor(0xc0, 0x39, 0x2b), QColor(0x5d, 0x6d, 0x7e)};
 const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
 // The street's: one hue per block's foot, down the hill; the speed percentiles in deepening
 // blues, the fastest ball in red.
@@ -37,7 +37,7 @@ QColor baseColour(ChartKind kind, int line)
 {
     switch (kind) {
     case ChartKind::Energy:
-        return energyColours[std::clamp(line, 0, 4)];
+        return energyColours[std::clamp(line, 0, 5)];
     case ChartKind::Activity:
         return activityColours[std::clamp(line, 0, 1)];
     case ChartKind::FootRate:

@@ -36,11 +36,6 @@ void setNiceRange(QValueAxis* axis, double lo, double hi, int ticks)
     axis->setRange(bottom, top);
 }
 
-QString squared(const QString& unit)
-{
-    return unit == "1" ? unit : unit + QString::fromUtf8("\u00b2");
-}
-
 } // namespace
 
 MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
@@ -146,111 +141,12 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
                                           {"px", "py", "pz"},
                                           {"\u0394x", "\u0394y", "\u0394z"},
                                           {"\u03c9x", "\u03c9y", "\u03c9z"}};
-    const std::vector<int> axes = scene.axes == 1 ? std::vector<int>{1} : std::vector<int>{0, 1, 2};
     spins_ = units.spins;
-    switch (kind_) {
-    case ChartKind::Position:
-    case ChartKind::Velocity:
-    case ChartKind::Difference:
-    case ChartKind::Spin:
-        shownAxes_ = axes;
-        break;
-    case ChartKind::Energy:
-        shownAxes_ = {0};
-        if (units.spins)
-            shownAxes_.push_back(4);
-        shownAxes_.push_back(1);
-        if (units.spring)
-            shownAxes_.push_back(3);
-        shownAxes_.push_back(2);
-        break;
-    case ChartKind::Momentum:
-        shownAxes_ = {0, 1, 2};
-        break;
-    case ChartKind::Activity:
-        shownAxes_ = {0, 1};
-        break;
-    case ChartKind::FootRate:
-        shownAxes_.clear();
-        for (std::size_t i = 0; i < footBlocks(units.streetBlocks).size(); ++i)
-            shownAxes_.push_back(int(i));
-        break;
-    case ChartKind::Speeds:
-        shownAxes_ = {0, 1, 2, 3};
-        break;
-    }
-    const QString time = coreText(scene.timeUnit);
-    const QString length = coreText(scene.lengthUnit);
-    const QString who = scene.ballCount == 1 ? tr("the ball") : tr("ball %1").arg(ball + 1);
-    who_ = who;
-    // Energy is m |v|^2: mass length^2 / time^2; momentum m v: mass length / time.
-    const QString energyUnit = squared(length) + "/" + squared(time);
-    const QString momentumUnit = length + "/" + time;
+    chooseLines(scene.axes, units);
     QString names[maxLines];
-    switch (kind_) {
-    case ChartKind::Position:
-        titleForms_ = {tr("Position of %1").arg(who)};
-        valueAxis_->setTitleText(tr("position (%1)").arg(length));
-        break;
-    case ChartKind::Velocity:
-        titleForms_ = {tr("Velocity of %1").arg(who)};
-        valueAxis_->setTitleText(tr("velocity (%1/%2)").arg(length, time));
-        break;
-    case ChartKind::Energy:
-        titleForms_ = units.perUnitMass
-                          ? QStringList{tr("Energy per unit mass, all balls (%1)").arg(energyUnit),
-                                        tr("Energy per unit mass (%1)").arg(energyUnit),
-                                        tr("E/m, all balls (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
-                          : QStringList{tr("Energy, all balls (kg %1)").arg(energyUnit),
-                                        tr("E, all balls (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)};
-        valueAxis_->setTitleText(units.perUnitMass ? tr("E/m") : tr("E"));
-        names[0] = units.spins ? tr("translation") : tr("kinetic");
-        names[1] = tr("potential");
-        names[2] = tr("total");
-        names[3] = tr("spring");
-        names[4] = tr("rotation");
-        break;
-    case ChartKind::Momentum:
-        titleForms_ =
-            units.perUnitMass
-                ? QStringList{tr("Total momentum per unit mass, all balls (%1)").arg(momentumUnit),
-                              tr("Momentum per unit mass (%1)").arg(momentumUnit),
-                              tr("p/m, all balls (%1)").arg(momentumUnit), tr("p/m (%1)").arg(momentumUnit)}
-                : QStringList{tr("Total momentum, all balls (kg %1)").arg(momentumUnit),
-                              tr("p, all balls (kg %1)").arg(momentumUnit), tr("p (kg %1)").arg(momentumUnit)};
-        valueAxis_->setTitleText(units.perUnitMass ? tr("p/m") : tr("p"));
-        break;
-    case ChartKind::Activity:
-        titleForms_ = {tr("Moving balls and impacts")};
-        valueAxis_->setTitleText(tr("moving balls"));
-        rateAxis_->setTitleText(tr("impacts per %1").arg(time));
-        names[0] = tr("moving balls");
-        names[1] = tr("impacts per %1").arg(time);
-        break;
-    case ChartKind::Difference:
-        titleForms_ = {tr("Difference in position of %1").arg(who), tr("Difference, %1").arg(who)};
-        valueAxis_->setTitleText(tr("difference (%1)").arg(length));
-        break;
-    case ChartKind::Spin:
-        titleForms_ = {tr("Spin of %1").arg(who)};
-        valueAxis_->setTitleText(tr("\u03c9 (rad/%1)").arg(time));
-        break;
-    case ChartKind::FootRate:
-        titleForms_ = {tr("Balls passing the foot of each block"), tr("Balls past each foot")};
-        valueAxis_->setTitleText(tr("balls per %1").arg(time));
-        nameFeet(names, units.streetBlocks);
-        break;
-    case ChartKind::Speeds:
-        titleForms_ = {tr("Speeds of the balls on the street"), tr("Speeds on the street")};
-        valueAxis_->setTitleText(tr("speed (%1/%2)").arg(length, time));
-        names[0] = tr("10th percentile");
-        names[1] = tr("median");
-        names[2] = tr("90th percentile");
-        names[3] = tr("fastest");
-        break;
-    }
+    nameChart(scene, ball, units, names);
     fitTitle();
-    timeAxis_->setTitleText(tr("t (%1)").arg(time));
+    timeAxis_->setTitleText(tr("t (%1)").arg(coreText(scene.timeUnit)));
     for (int a = 0; a < maxLines; ++a) {
         const bool shown = std::find(shownAxes_.begin(), shownAxes_.end(), a) != shownAxes_.end();
         lines_[a]->clear();
@@ -281,13 +177,6 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
     placeCursor();
 }
 
-void MotionChart::nameFeet(QString* names, int blocks)
-{
-    const std::vector<int> feet = footBlocks(blocks);
-    for (std::size_t i = 0; i < feet.size(); ++i)
-        names[i] = feet[i] + 1 == blocks ? tr("foot of the street") : tr("foot of block %1").arg(feet[i] + 1);
-}
-
 void MotionChart::setTimeSpan(double tEnd)
 {
     if (!(std::isfinite(tEnd) && tEnd > 0.0))
@@ -313,10 +202,14 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
     case ChartKind::Velocity:
         return track.v(line);
     case ChartKind::Energy: {
-        // Where the balls turn, line 0 is the kinetic energy of translation and line 4 of rotation.
+        // Where the balls turn, line 0 is the kinetic energy of translation and line 4 of
+        // rotation; line 5 is what the balls that left the street took with them.
         const std::vector<double>* parts[maxLines] = {spins_ ? &track.translation() : &track.kinetic(),
-                                                      &track.potential(), &track.energy(), &track.spring(),
-                                                      &track.rotation()};
+                                                      &track.potential(),
+                                                      &track.energy(),
+                                                      &track.spring(),
+                                                      &track.rotation(),
+                                                      &track.left()};
         return *parts[line];
     }
     case ChartKind::Spin:
@@ -397,9 +290,12 @@ void MotionChart::drawTrack(const MotionTrack& track, int columns, const std::ar
         setTimeSpan(track.t().back());
     else
         applyTimeRange(); // the plot may have been resized since
-    // The selected ball's own lines end where it left the run (the street's foot).
+    // The selected ball's own lines end where it left the run (the street's foot); the
+    // speeds where the last ball left the street.
     const bool ballsOwn = kind_ == ChartKind::Position || kind_ == ChartKind::Velocity || kind_ == ChartKind::Spin;
-    const std::size_t count = ballsOwn ? track.ballSamples() : track.size();
+    const std::size_t count = ballsOwn                     ? track.ballSamples()
+                              : kind_ == ChartKind::Speeds ? track.streetSamples()
+                                                           : track.size();
     for (int a : shownAxes_) {
         const QList<QPointF> points = downsampleMinMax(track.t(), column(track, a), columns, count);
         if (!points.isEmpty()) {

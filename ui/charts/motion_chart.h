@@ -79,7 +79,7 @@ struct ReferenceMotion {
 class MotionChart : public QChart {
     Q_OBJECT
 public:
-    static constexpr int maxLines = 5; // the energy chart's parts, where the balls turn
+    static constexpr int maxLines = 6; // the energy chart's parts on the street
     explicit MotionChart(ChartKind kind, const ChartLook& look = ChartLook::window());
 
     ChartKind kind() const { return kind_; }
@@ -145,6 +145,12 @@ private:
     void updateRateRange(double hi);
     void placeCursor();
     void applyNames();
+    // The lines the chart draws (shownAxes_) for a scene of `sceneAxes` axes (1 or 3) and `units`
+    // (motion_chart_titles.cpp).
+    void chooseLines(int sceneAxes, const ChartUnits& units);
+    // Its title forms, value axis title and line names (`names`, maxLines of them; those left
+    // empty are the axes' x, y, z), for ball `ball` of `scene`.
+    void nameChart(const SceneInfo& scene, int ball, const ChartUnits& units, QString* names);
     // The foot-rate chart's line names, for a street of `blocks` blocks.
     static void nameFeet(QString* names, int blocks);
     // The lines of `track` into `series`, widening the axes to hold them.

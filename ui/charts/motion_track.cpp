@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "motion_track.h"
 
+#include "core/street/street_census.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -24,12 +26,14 @@ template <typename F> void MotionTrack::forEachColumn(F&& f)
     f(potential_);
     f(spring_);
     f(energy_);
+    f(left_);
     f(moving_);
     f(impacts_);
     for (auto& column : feet_)
         f(column);
     for (auto& column : speeds_)
         f(column);
+    f(onStreet_);
 }
 
 void MotionTrack::clear()
@@ -72,12 +76,14 @@ void MotionTrack::add(long long step, double t, const Eigen::Vector3d& p, const 
     potential_.push_back(scene.energy.potential);
     spring_.push_back(scene.energy.spring);
     energy_.push_back(scene.energy.total());
+    left_.push_back(scene.energy.left);
     moving_.push_back(static_cast<double>(scene.moving));
     impacts_.push_back(scene.impacts);
     for (std::size_t k = 0; k < feet_.size(); ++k)
         feet_[k].push_back(street.pastFoot[k]);
     for (std::size_t k = 0; k < speeds_.size(); ++k)
         speeds_[k].push_back(street.speed[k]);
+    onStreet_.push_back(street.onStreet);
     while (t_.size() > capacity_)
         thin();
 }
@@ -98,6 +104,27 @@ void MotionTrack::markBallGone(long long step)
 std::size_t MotionTrack::ballSamples() const
 {
     return static_cast<std::size_t>(std::lower_bound(step_.begin(), step_.end(), goneStep_) - step_.begin());
+}
+
+std::size_t MotionTrack::streetSamples() const
+{
+    std::size_t n = onStreet_.size();
+    while (n > 0 && !(onStreet_[n - 1] > 0.0))
+        --n;
+    return n;
+}
+
+void addState(MotionTrack& track, long long step, const State& s, int ball, const ConservationSample& scene,
+              const street::Layout* street)
+{
+    const Eigen::Index b = ball;
+    if (!street) {
+        track.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(ball), scene);
+        return;
+    }
+    if (street::hasLeft(*street, s.p(0, b)))
+        track.markBallGone(step);
+    track.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(ball), scene, measureStreet(*street, s));
 }
 
 void MotionTrack::thin()

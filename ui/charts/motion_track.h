@@ -42,6 +42,9 @@ public:
     // The samples before the ball left, all of them while it has not: its position,
     // velocity and spin are drawn from these; the scene's columns from all.
     std::size_t ballSamples() const;
+    // The samples up to the last with a ball on the street: the speeds are drawn from these
+    // (the street's; 0 elsewhere, where no sample has one).
+    std::size_t streetSamples() const;
 
     std::size_t size() const { return t_.size(); }
     bool empty() const { return t_.empty(); }
@@ -54,13 +57,15 @@ public:
     const std::vector<double>& v(int axis) const { return v_[static_cast<std::size_t>(axis)]; }
     const std::vector<double>& w(int axis) const { return w_[static_cast<std::size_t>(axis)]; }
     // Of all balls: kinetic (translation and rotation), potential, spring and total
-    // energy, the kinetic energy's parts of translation and rotation; momentum per axis.
+    // energy, the kinetic energy's parts of translation and rotation, what the balls that
+    // left the street took with them (EnergyParts::left, 0 elsewhere); momentum per axis.
     const std::vector<double>& kinetic() const { return kinetic_; }
     const std::vector<double>& translation() const { return translation_; }
     const std::vector<double>& rotation() const { return rotation_; }
     const std::vector<double>& potential() const { return potential_; }
     const std::vector<double>& spring() const { return spring_; }
     const std::vector<double>& energy() const { return energy_; }
+    const std::vector<double>& left() const { return left_; }
     const std::vector<double>& momentum(int axis) const { return momentum_[static_cast<std::size_t>(axis)]; }
     const std::vector<double>& moving() const { return moving_; }
     const std::vector<long long>& impacts() const { return impacts_; } // since the start
@@ -68,6 +73,7 @@ public:
     // (footBlocks), and the speed percentiles (StreetSample::speed).
     const std::vector<double>& pastFoot(int line) const { return feet_[static_cast<std::size_t>(line)]; }
     const std::vector<double>& speed(int line) const { return speeds_[static_cast<std::size_t>(line)]; }
+    const std::vector<double>& onStreet() const { return onStreet_; }
 
 private:
     void thin();
@@ -80,11 +86,18 @@ private:
     std::vector<long long> step_;
     std::vector<double> t_;
     std::array<std::vector<double>, 3> p_, v_, w_, momentum_;
-    std::vector<double> kinetic_, translation_, rotation_, potential_, spring_, energy_, moving_;
+    std::vector<double> kinetic_, translation_, rotation_, potential_, spring_, energy_, left_, moving_;
     std::vector<long long> impacts_;
     std::array<std::vector<double>, kFootLines> feet_;
     std::array<std::vector<double>, kSpeedLines> speeds_;
+    std::vector<double> onStreet_;
 };
+
+// Offers state `s` of step `step` to `track`: ball `ball`'s motion, `scene` (the state's
+// ConservationSample) and, on `street` (null for the other scenes), its own sample; a ball
+// that has left at the street's foot ends its own lines there (markBallGone).
+void addState(MotionTrack& track, long long step, const State& s, int ball, const ConservationSample& scene,
+              const street::Layout* street);
 
 // Impacts per unit of time at every kept sample: the impacts counted over the window
 // (t - window, t], divided by the time that window spans (shorter at the start). A

@@ -61,7 +61,7 @@ QString RunDescription::caption(const RunFacts& run, const RunFacts* comparison,
         scheme += tr(", physical model, integrator %1, impacts %2")
                       .arg(coreText(integratorTitle(spec.integrator)),
                            spec.impacts == ImpactMode::StepEnd ? tr("at the step's end") : tr("located in the step"));
-    scheme += tr(", dt = %1 %2").arg(qs(formatNumber(run.dt)), coreText(info.timeUnit));
+    scheme += tr(", dt = %1 %2").arg(qs(formatStep(run.dt)), coreText(info.timeUnit));
     parts << scheme;
     QStringList changed;
     const unsigned mask = modelMask(spec.model);
@@ -69,11 +69,15 @@ QString RunDescription::caption(const RunFacts& run, const RunFacts* comparison,
         const ParamSpec& p = info.params[i];
         if (!p.usedBy(mask) || spec.params.isDefault(i))
             continue;
-        changed << tr("%1 = %2 (report: %3)")
-                       .arg(qs(p.key), qs(formatValue(p, spec.params.raw(i)) + unitSuffix(p.unit)),
-                            qs(formatValue(p, p.defaultValue)));
+        const QString value = qs(formatValue(p, spec.params.raw(i)) + unitSuffix(p.unit));
+        const QString usual = qs(formatValue(p, p.defaultValue));
+        changed << (p.reportDefault() ? tr("%1 = %2 (report: %3)") : tr("%1 = %2 (default: %3)"))
+                       .arg(qs(p.key), value, usual);
     }
-    parts << (changed.isEmpty() ? tr("the report's constants") : changed.join(", "));
+    if (changed.isEmpty())
+        parts << (anyReportDefault(info.params) ? tr("the report's constants") : tr("the default constants"));
+    else
+        parts << changed.join(", ");
     if (spec.init)
         parts << tr("started from a given state");
     if (comparison)
@@ -111,8 +115,9 @@ std::vector<std::string> RunDescription::comments(const RunFacts& run, const Run
         if (!p.usedBy(mask))
             continue;
         std::string line = "constant " + p.key + " = " + formatValue(p, spec.params.raw(i)) + unitSuffix(p.unit);
-        line += spec.params.isDefault(i) ? " (the report's value)"
-                                         : " (the report's: " + formatValue(p, p.defaultValue) + ")";
+        const std::string whose = p.reportDefault() ? "the report's" : "the default";
+        line += spec.params.isDefault(i) ? " (" + whose + " value)"
+                                         : " (" + whose + ": " + formatValue(p, p.defaultValue) + ")";
         out.push_back(line);
     }
     if (spec.init)

@@ -25,6 +25,7 @@ StreetSample measureStreet(const street::Layout& layout, const State& s)
     const std::vector<int> blocks = footBlocks(layout.blocks);
     for (std::size_t i = 0; i < blocks.size(); ++i)
         out.pastFoot[i] = double(c.pastFoot[std::size_t(blocks[i])]);
+    out.onStreet = double(c.onStreet);
     std::vector<double> speeds;
     speeds.reserve(std::size_t(std::max(c.onStreet, 0)));
     for (int i = 0; i < s.size(); ++i)

@@ -21,6 +21,7 @@ inline constexpr int kSpeedLines = 4;
 struct StreetSample {
     std::array<double, kFootLines> pastFoot{}; // balls whose centres are beyond the foot of footBlocks()[i]
     std::array<double, kSpeedLines> speed{};   // of the balls on the street (0 when none is)
+    double onStreet = 0.0;                     // balls on the street (the speeds' sample size)
 };
 
 // The blocks (0-based) the foot-rate chart follows: every block up to kFootLines, else the

@@ -413,11 +413,13 @@ const char* const listed[] = {
                 "translation and rotation trading while the total falls only slowly as the balls drop."),
     QT_TRANSLATE_NOOP("core", "One ball rolling down one block: the 5/7 rule on a slope"),
     QT_TRANSLATE_NOOP("core",
-                      "One ball set down on a 17 deg block without rebound (e = 0). Once it has landed, friction (mu = "
-                      "0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates "
-                      "at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a "
-                      "ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a "
-                      "straight line; at the foot, 80 m down, it rolls at about 18 m/s and leaves the street."),
+                      "One ball set down without rebound (e = 0) on a 17 deg block, 48.7 m up the road from the "
+                      "foot (the hopper's lowest site). Once it has landed, friction (mu = 0.5, more than q "
+                      "tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g "
+                      "sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball "
+                      "sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a "
+                      "straight line; after t = v/a = 6.9 s it reaches the foot at v = sqrt(2 a d) = sqrt(2 x 2.051 "
+                      "x 48.7) = 14.1 m/s and leaves the street."),
     QT_TRANSLATE_NOOP(
         "core", "Sony's advert released 250,000 superballs down a San Francisco street. Here they drop from the hopper "
                 "over the top of three 17 deg blocks, with restitution 0.85 and grippy "

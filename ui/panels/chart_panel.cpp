@@ -266,6 +266,16 @@ std::vector<ChartKind> ChartPanel::shownCharts() const
     return out;
 }
 
+ChartKind ChartPanel::currentChart() const
+{
+    if (onCurrentPage(current_))
+        return current_;
+    for (ChartKind kind : shownCharts())
+        if (onCurrentPage(kind))
+            return kind;
+    return current_;
+}
+
 bool ChartPanel::onCurrentPage(ChartKind kind) const
 {
     return views_[slot(kind)]->isVisibleTo(this);

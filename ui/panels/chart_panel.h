@@ -56,7 +56,9 @@ public:
 
     MotionChart* chart(ChartKind kind) const;
     QChartView* chartView(ChartKind kind) const;
-    ChartKind currentChart() const { return current_; }
+    // The chart last pointed at while it is on the page shown, else the page's first: what
+    // "Export current chart" exports.
+    ChartKind currentChart() const;
     // The charts the scene shows (applying and wished for), in order, on any page.
     std::vector<ChartKind> shownCharts() const;
     // The pages' tabs (hidden while every shown chart fits on one page).

@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace ab::ui {
@@ -28,6 +30,16 @@ QString prettyUnit(const std::string& unit)
     u.replace("^2", QString::fromUtf8("\u00b2"));
     u.replace("^3", QString::fromUtf8("\u00b3"));
     return u == "1" ? QString() : u;
+}
+
+QLabel* newErrorLabel(const QString& name)
+{
+    auto* label = new QLabel;
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setStyleSheet("color: #b03020;");
+    label->hide();
+    return label;
 }
 
 void setInvalid(QLineEdit* field, bool invalid)
@@ -50,11 +62,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
     // that the longest choice reads whole in a 30 % column at 1280 px.
     form_->setRowWrapPolicy(QFormLayout::WrapAllRows);
     layout->addLayout(form_);
-    error_ = new QLabel;
-    error_->setObjectName("parameterError");
-    error_->setWordWrap(true);
-    error_->setStyleSheet("color: #b03020;");
-    error_->hide();
+    error_ = newErrorLabel(QStringLiteral("parameterError"));
     layout->addWidget(error_);
     reportValues_ = new QPushButton(tr("Report values"));
     reportValues_->setObjectName("reportValues");
@@ -72,20 +80,27 @@ QString ParameterPanel::tooltip(const ParamSpec& spec)
     const QString unit = prettyUnit(spec.unit);
     return QStringLiteral("<b>%1</b> (%2): %3<br>%4 %5<br>%6 %7 %8<br>%9 %10")
         .arg(qs(spec.symbol).toHtmlEscaped(), qs(spec.key).toHtmlEscaped(), coreText(spec.meaning).toHtmlEscaped(),
-             tr("Report:"), coreText(spec.equation).toHtmlEscaped(), tr("Range:"),
-             qs(formatRange(spec)).toHtmlEscaped(), unit.toHtmlEscaped(), tr("Report value:"))
+             spec.reportDefault() ? tr("Report:") : tr("Source:"), coreText(spec.equation).toHtmlEscaped(),
+             tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(), unit.toHtmlEscaped(),
+             spec.reportDefault() ? tr("Report value:") : tr("Default:"))
         .arg(qs(formatValue(spec, spec.defaultValue)).toHtmlEscaped());
 }
 
 void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const ParamValues& values)
 {
     scene_ = &scene;
+    // The street's constants are this program's: the report never reached it.
+    const bool report = anyReportDefault(scene.params);
+    reportValues_->setText(report ? tr("Report values") : tr("Default values"));
+    reportValues_->setToolTip(report ? tr("Restore every constant of this stage to the report's value")
+                                     : tr("Restore every constant of this stage to its default"));
     refused_.clear(); // another stage or model: its own fields
     pending_.clear();
     while (form_->rowCount() > 0)
         form_->removeRow(0);
     fields_.clear();
     labels_.clear();
+    notes_.clear();
     const unsigned mask = model == ModelKind::Report ? ReportModel : PhysicalModel;
     for (const ParamSpec& spec : scene.params) {
         if (!spec.usedBy(mask))
@@ -101,12 +116,19 @@ void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const Par
         auto* row = new QHBoxLayout;
         row->addWidget(field, 1);
         row->addWidget(unit);
+        // A refusal is explained under its field, where the eye is (not below the fold).
+        auto* note = newErrorLabel(QStringLiteral("paramError-%1").arg(qs(spec.key)));
+        auto* column = new QVBoxLayout;
+        column->setSpacing(2);
+        column->addLayout(row);
+        column->addWidget(note);
         const QString tip = tooltip(spec);
         for (QWidget* w : {static_cast<QWidget*>(label), static_cast<QWidget*>(field), static_cast<QWidget*>(unit)})
             w->setToolTip(tip);
-        form_->addRow(label, row);
+        form_->addRow(label, column);
         fields_[spec.key] = field;
         labels_[spec.key] = label;
+        notes_[spec.key] = note;
         const std::string key = spec.key;
         connect(field, &QLineEdit::editingFinished, this, [this, key] { edited(key); });
         auto* number = new NumberField(field, spec.kind == ParamKind::Vector    ? NumberKind::Vector
@@ -141,13 +163,17 @@ void ParameterPanel::showValues(const ParamValues& values)
 
 void ParameterPanel::showRefusals()
 {
-    for (const auto& [key, field] : fields_)
-        setInvalid(field, refused_.count(key) > 0);
-    QStringList lines;
-    for (const auto& [key, message] : refused_)
-        lines << tr("Not applied: %1").arg(message);
-    error_->setText(lines.join("\n"));
-    error_->setVisible(!lines.isEmpty());
+    for (const auto& [key, field] : fields_) {
+        const auto refusal = refused_.find(key);
+        const bool refused = refusal != refused_.end();
+        setInvalid(field, refused);
+        QLabel* note = notes_.at(key);
+        note->setText(refused ? tr("Not applied: %1").arg(refusal->second) : QString());
+        note->setVisible(refused);
+    }
+    const auto whole = refused_.find(std::string()); // the panel's, not one field's
+    error_->setText(whole != refused_.end() ? tr("Not applied: %1").arg(whole->second) : QString());
+    error_->setVisible(whole != refused_.end());
 }
 
 void ParameterPanel::revert(const std::string& key)
@@ -163,6 +189,15 @@ void ParameterPanel::refuse(const std::string& key, const QString& message)
     refused_[fields_.count(which) ? which : std::string()] = message;
     pending_.clear();
     showRefusals();
+    // The reason scrolled into sight with its field, once the layout has made room for it.
+    QLabel* note = notes_.count(which) ? notes_.at(which) : error_;
+    QTimer::singleShot(0, note, [note] {
+        for (QWidget* w = note->parentWidget(); w; w = w->parentWidget())
+            if (auto* area = qobject_cast<QScrollArea*>(w)) {
+                area->ensureWidgetVisible(note, 0, 8);
+                return;
+            }
+    });
 }
 
 void ParameterPanel::edited(const std::string& key)
@@ -220,7 +255,13 @@ std::vector<std::string> ParameterPanel::shownKeys() const
 
 QString ParameterPanel::errorText() const
 {
-    return error_->isHidden() ? QString() : error_->text();
+    QStringList lines;
+    for (const auto& [key, note] : notes_)
+        if (!note->isHidden())
+            lines << note->text();
+    if (!error_->isHidden())
+        lines << error_->text();
+    return lines.join("\n");
 }
 
 } // namespace ab::ui

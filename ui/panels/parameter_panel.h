@@ -3,7 +3,7 @@
 // parameter the chosen model reads, with its unit, range and a tooltip naming the
 // equation, and "Report values" to restore the report's constants. A typed value is
 // checked against the table and the scene's cross-checks; a refused value is marked
-// and explained, and never applied.
+// and explained under its field, and never applied.
 #pragma once
 
 #include "core/scene.h"
@@ -62,6 +62,7 @@ private:
     QPushButton* reportValues_;
     std::map<std::string, QLineEdit*> fields_;
     std::map<std::string, QLabel*> labels_;
+    std::map<std::string, QLabel*> notes_;   // under each field: why its entry was refused
     std::map<std::string, QString> refused_; // field key (or "" for the panel) -> reason
     std::string pending_;                    // the field whose edit the window is deciding on
 };

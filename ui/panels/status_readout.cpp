@@ -182,12 +182,11 @@ void StatusReadout::showEnergy(double energy, bool perUnitMass, const QString& l
         // energy chart draws the sum, which the tooltip gives. (Stage 4's 150 balls sum
         // to a readable figure, and its long units leave the bar no room for "a ball".)
         energy_->setText(tr("E/m = %1 %2 a ball").arg(QString::number(energy / double(n), 'g', 4), unit));
-        energy_->setToolTip(
-            tr("Kinetic plus potential energy per unit mass, with the height measured from the "
-               "street's foot: the mean over the %1 balls. All balls together: %2 %3, as the energy chart "
-               "draws it")
-                .arg(n)
-                .arg(QString::number(energy, 'g', 5), unit));
+        energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, with the height measured from the "
+                               "street's foot, and what the balls that left at the foot took with them: the mean over "
+                               "the %1 balls. All balls together: %2 %3, the energy chart's total")
+                                .arg(n)
+                                .arg(QString::number(energy, 'g', 5), unit));
         return;
     } else if (perUnitMass) {
         energy_->setText(tr("E/m = %1 %2").arg(QString::number(energy, 'g', 5), unit));

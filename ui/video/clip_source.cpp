@@ -103,11 +103,8 @@ MotionTrack recordTrack(const RunSpec& spec, long long steps, int ball, double t
         [&](const State& s) {
             healthy = healthy && finite(s);
             past = past || !reached(s.t, tEnd);
-            if (healthy && !past && layout.street && street::hasLeft(*layout.street, s.p(0, ball)))
-                track.markBallGone(index);
             if (healthy && !past)
-                track.add(index++, s.t, s.p.col(ball), s.v.col(ball), s.spin(ball), meter.measure(s),
-                          layout.street ? measureStreet(*layout.street, s) : StreetSample{});
+                addState(track, index++, s, ball, meter.measure(s), layout.street ? &*layout.street : nullptr);
         },
         [&] { return !healthy || past || (cancelled && cancelled()); });
     return track;
