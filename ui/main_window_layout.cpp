@@ -16,6 +16,7 @@
 #include "view/street_camera_bar.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QMenuBar>
@@ -59,6 +60,28 @@ public:
 private:
     QWidget* settings_;
     QWidget* scroll_;
+};
+
+// A choice in the scrolling settings column turns with the wheel only once it has the focus
+// (a click or Tab): a wheel turned over it on the way down the column scrolls the column, and
+// does not change the model, the integrator or the impacts on the way.
+class WheelOnlyWhenFocused : public QObject {
+public:
+    WheelOnlyWhenFocused(QWidget* widget, QAbstractScrollArea* column) : QObject(widget), column_(column)
+    {
+        widget->setFocusPolicy(Qt::StrongFocus); // the wheel gives it no focus either
+        widget->installEventFilter(this);
+    }
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() != QEvent::Wheel || static_cast<QWidget*>(watched)->hasFocus())
+            return QObject::eventFilter(watched, event);
+        QCoreApplication::sendEvent(column_->viewport(), event); // the column's own wheel
+        return true;
+    }
+
+private:
+    QAbstractScrollArea* column_;
 };
 
 // Gives the settings column, whenever the window has room for it, the width its choices
@@ -187,8 +210,10 @@ QWidget* MainWindow::buildLeftPanel()
     // item, and the settings scroll sideways where the column is narrower. (A layout with
     // wrapped labels has a height for its width, and QScrollArea then sets the width to
     // the viewport's, below the layout's minimum, unless the widget's own minimum says no.)
-    for (QComboBox* combo : settings->findChildren<QComboBox*>())
+    for (QComboBox* combo : settings->findChildren<QComboBox*>()) {
         combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        new WheelOnlyWhenFocused(combo, scroll);
+    }
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     new KeepLayoutMinimum(settings, scroll);
     connect(parameters_, &ParameterPanel::valuesProposed, this, &MainWindow::applyValues);

@@ -28,8 +28,10 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSlider>
 #include <QToolButton>
+#include <QWheelEvent>
 #include <QtTest>
 
 #include <cmath>
@@ -256,6 +258,35 @@ private slots:
                                                          .arg(noteRect.height())
                                                          .arg(seen.height())));
         QVERIFY(w.findChild<QLabel*>("parameterError")->isHidden()); // nothing for the whole panel
+    }
+
+    void aWheelOverAChoiceScrollsTheSettingsAndChangesNothing()
+    {
+        // Scrolling down the settings column with the wheel passes over the model, integrator
+        // and impacts choices: unless one was clicked first, the column scrolls, the choice stays.
+        MainWindow w;
+        w.resize(1280, 720);
+        w.showScene(SceneId::Street); // its impacts are the physical model's, open to change
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* area = w.findChild<QScrollArea*>("settingsScroll");
+        auto* impacts = w.findChild<QComboBox*>("impactsCombo");
+        QVERIFY(area && impacts && impacts->isEnabled());
+        QVERIFY(area->verticalScrollBar()->maximum() > 0);
+        const int choice = impacts->currentIndex(), scrolled = area->verticalScrollBar()->value();
+        auto wheel = [&] {
+            const QPointF at(impacts->width() / 2.0, impacts->height() / 2.0);
+            QWheelEvent down(at, impacts->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                             Qt::NoScrollPhase, false);
+            QApplication::sendEvent(impacts, &down);
+        };
+        wheel();
+        QCOMPARE(impacts->currentIndex(), choice);
+        QVERIFY(area->verticalScrollBar()->value() > scrolled);
+        impacts->setFocus(); // chosen with a click or Tab: the wheel turns it
+        QVERIFY(QTest::qWaitFor([&] { return impacts->hasFocus(); }));
+        wheel();
+        QVERIFY(impacts->currentIndex() != choice);
     }
 
     void anInvalidEntryStaysInRedUntilFixedWhenAnotherFieldIsEdited()
