@@ -1919,10 +1919,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Lågt på gatan bortom foten, med blicken uppför gatan: reklamfilmens bild (F)</translation>
     </message>
     <message>
-        <source>The street in profile, the near houses cut away (S)</source>
-        <translation>Gatan i profil, de närmaste husen bortskurna (S)</translation>
-    </message>
-    <message>
         <source>Ahead of the front of the flood, moving down the hill with it (G)</source>
         <translation>Framför flodens front, på väg nedför backen med den (G)</translation>
     </message>
@@ -1937,6 +1933,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Flood</source>
         <translation>Floden</translation>
+    </message>
+    <message>
+        <source>The whole street from the side and above, the near houses cut away (S)</source>
+        <translation>Hela gatan från sidan och ovanifrån, de närmaste husen bortskurna (S)</translation>
     </message>
 </context>
 <context>

@@ -349,7 +349,7 @@ private slots:
         QVERIFY(top.y() < foot.y()); // the top of the hill above the foot in the picture
     }
 
-    void sideShotShowsTheProfileTopLeftFootRight()
+    void sideShotShowsTheWholeStreetTopLeftFootRightFromAbove()
     {
         const street::Layout s = defaultStreet();
         const QSize view(800, 600);
@@ -360,6 +360,15 @@ private slots:
         QVERIFY(camera.project(QVector3D(float(s.xFoot), 0.0f, 0.0f), view, foot));
         QVERIFY(onScreen(top, view) && onScreen(foot, view));
         QVERIFY(top.x() < foot.x() && top.y() < foot.y());
+        // From above and a little downhill: the roadway shows its width, so the flood is seen on
+        // it, not only its profile (a level view drew the road as a line).
+        QVERIFY(camera.pitch() >= 20.0f);
+        QVERIFY(camera.eye().x() > 0.5f * float(s.xTop + s.xFoot));
+        const float mid = 0.5f * float(s.xTop + s.xFoot), road = float(s.roadY(mid));
+        QPointF nearKerb, farKerb;
+        QVERIFY(camera.project(QVector3D(mid, road, 0.5f * float(s.width)), view, nearKerb));
+        QVERIFY(camera.project(QVector3D(mid, road, -0.5f * float(s.width)), view, farKerb));
+        QVERIFY2(nearKerb.y() - farKerb.y() > 6.0, qPrintable(QString::number(nearKerb.y() - farKerb.y())));
     }
 
     void floodShotFollowsTheFrontAndIgnoresGoneBallsAndALoneRunaway()

@@ -49,9 +49,11 @@ CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, st
         return pose;
     }
     case StreetShot::Side: {
-        // From +z, level with the street's middle, far enough back to hold it all.
+        // From the +z side, 24 deg above and turned 25 deg downhill, far enough back to hold it
+        // all: the road shows its width, and the flood on it, over the near houses (cut away);
+        // level with the street it was a line.
         OrbitCamera c;
-        c.frame({float(s.xTop), 0.0f, -across}, {float(s.xFoot), float(s.height), across}, 0.0f, 6.0f, aspect);
+        c.frame({float(s.xTop), 0.0f, -across}, {float(s.xFoot), float(s.height), across}, 25.0f, 24.0f, aspect);
         return {c.target(), c.yaw(), c.pitch(), c.distance() * 0.92f};
     }
     case StreetShot::Flood: {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The street's camera shots (stage 5): from the foot of the hill looking up the street,
-// low on the road as the advert's camera stood; from the side, the street in profile
+// low on the road as the advert's camera stood; from the side and above, the whole street
 // with the near houses cut away; and following the front of the flood down the hill.
 #pragma once
 

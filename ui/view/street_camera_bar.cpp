@@ -49,7 +49,7 @@ void StreetCameraBar::retranslate()
     buttons_[0]->setText(tr("Foot"));
     buttons_[0]->setToolTip(tr("Low on the road past the foot, looking up the street: the advert's shot (F)"));
     buttons_[1]->setText(tr("Side"));
-    buttons_[1]->setToolTip(tr("The street in profile, the near houses cut away (S)"));
+    buttons_[1]->setToolTip(tr("The whole street from the side and above, the near houses cut away (S)"));
     buttons_[2]->setText(tr("Flood"));
     buttons_[2]->setToolTip(tr("Ahead of the front of the flood, moving down the hill with it (G)"));
 }

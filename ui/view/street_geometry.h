@@ -4,7 +4,7 @@
 // centre line, the crossings paler with zebra stripes, the sidewalks concrete, the parked
 // cars in colours, and a terrace of painted house fronts along both sides whose roofs
 // follow the road. The houses on the near side (+z) go to their own list, so that the side
-// shot can leave them out and see the street in profile.
+// shot can leave them out and see the road over them.
 #pragma once
 
 #include "scene_geometry.h"
