@@ -64,7 +64,7 @@ void MainWindow::cancelPanelRefresh()
 void MainWindow::refreshPanels()
 {
     const EngineStatus status = controller_.status();
-    const std::optional<double> viewT = transport_->viewTime();
+    const std::optional<double> viewT = transport_->shownTime(); // the cursor at the state shown
     controller_.engine().read([&](const Recording& rec, const Frame&) { charts_->showTrack(rec.track()); });
     if (const RunEngine* compare = controller_.comparisonEngine())
         compare->read([&](const Recording& rec, const Frame&) { charts_->showComparisonTrack(rec.track()); });
@@ -80,7 +80,7 @@ void MainWindow::refreshPanelPart()
         return;
     }
     const EngineStatus status = controller_.status();
-    const std::optional<double> viewT = transport_->viewTime();
+    const std::optional<double> viewT = transport_->shownTime(); // the cursor at the state shown
     const std::optional<double> cursor = viewT ? viewT : std::optional<double>(status.t);
     // The next shown chart; hidden ones take no tick.
     while (static_cast<std::size_t>(panelPart_) < ChartPanel::kSlots) {
@@ -122,11 +122,13 @@ void MainWindow::refreshReadings(const EngineStatus& status)
 
 void MainWindow::refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT)
 {
-    if (!view_)
-        return;
     const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
     if (!shown)
         shown = &current;
+    if (viewT)
+        transport_->setShownTime(shown->t); // the bar's time is the state's the view shows
+    if (!view_)
+        return;
     view_->setBalls(shown->p, shown->q);
     if (controller_.layout().axes == 1) {
         view_->setTrace({}); // the vertical scene's trace would hide the ball's own line

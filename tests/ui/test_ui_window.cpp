@@ -308,6 +308,26 @@ private slots:
         QVERIFY(!w.transport()->viewTime().has_value()); // the right end is live
     }
 
+    void theBarAndTheStatusReadTheTimeOfTheStateShown()
+    {
+        // A third of 100 steps is 33.33 steps on the slider; the state recorded there is the one
+        // of step 33, which the view draws: the bar over the view reads its time, as the status
+        // bar does, not the slider's.
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        const std::optional<double> looked = testing::stepThenLookBack(w, 100, 1, 3);
+        QVERIFY(looked && std::abs(*looked - 100.0 / 3.0) < 0.1 && std::abs(*looked - 33.0) > 0.2);
+        w.controller().poll();
+        auto* label = w.findChild<QLabel*>("timeLabel");
+        QVERIFY(label);
+        QTRY_VERIFY2(label->text().startsWith("t = 33.00 of 100.0 step"), qPrintable(label->text()));
+        QTRY_COMPARE(w.readout()->timeText(), QString("t = 33.00 step"));
+        // And the charts' cursor stands there.
+        QTRY_VERIFY(!w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points().isEmpty());
+        QTRY_COMPARE(w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points().front().x(), 33.0);
+    }
+
     void chartsFollowTheChosenBall()
     {
         MainWindow w;

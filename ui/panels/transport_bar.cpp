@@ -126,6 +126,7 @@ void TransportBar::goLive()
     if (!viewTime_)
         return;
     viewTime_.reset();
+    shownTime_.reset();
     updating_ = true;
     time_->setValue(timeSteps);
     updating_ = false;
@@ -138,6 +139,7 @@ void TransportBar::lookAt(double t)
     if (!(end_ > start_))
         return;
     viewTime_ = std::clamp(t, start_, end_);
+    shownTime_.reset();
     updating_ = true;
     time_->setValue(int(std::lround((*viewTime_ - start_) / (end_ - start_) * timeSteps)));
     updating_ = false;
@@ -153,16 +155,25 @@ void TransportBar::scrubbed(int value)
         viewTime_.reset();
     else
         viewTime_ = start_ + (end_ - start_) * value / timeSteps;
+    shownTime_.reset();
     updateLabel();
     emit viewTimeChanged(viewTime_);
+}
+
+void TransportBar::setShownTime(double t)
+{
+    if (!viewTime_ || shownTime_ == t)
+        return;
+    shownTime_ = t;
+    updateLabel();
 }
 
 void TransportBar::updateLabel()
 {
     const auto fmt = [](double t) { return QString::number(t, 'f', t < 100 ? 2 : 1); };
     if (viewTime_)
-        timeLabel_->setText(
-            tr("t = %1 of %2 %3 (looking back: Play goes on from here)").arg(fmt(*viewTime_), fmt(end_), unit_));
+        timeLabel_->setText(tr("t = %1 of %2 %3 (looking back: Play goes on from here)")
+                                .arg(fmt(shownTime_.value_or(*viewTime_)), fmt(end_), unit_));
     else
         timeLabel_->setText(tr("t = %1 %2 (live)").arg(fmt(end_), unit_));
 }

@@ -29,6 +29,11 @@ public:
     void goLive();
     // Shows the recorded moment `t` (clamped to the record), as a drag of the slider does.
     void lookAt(double t);
+    // The time of the recorded state shown for the moment looked at (the kept frame at or
+    // before it): the label reads it, as the status bar does, not the slider's position.
+    void setShownTime(double t);
+    // While looking back: the shown state's time where it is known, else the slider's.
+    std::optional<double> shownTime() const { return viewTime_ ? shownTime_.value_or(*viewTime_) : viewTime_; }
 
     QPushButton* playButton() const { return play_; }
     QPushButton* stepButton() const { return step_; }
@@ -62,6 +67,7 @@ private:
     double start_ = 0.0, end_ = 0.0;
     QString unit_;
     std::optional<double> viewTime_;
+    std::optional<double> shownTime_; // setShownTime, while looking back
     bool updating_ = false;
 };
 
