@@ -21,6 +21,7 @@
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QLocale>
+#include <QScreen>
 #include <QSettings>
 #include <QSurfaceFormat>
 
@@ -383,8 +384,8 @@ int main(int argc, char** argv)
     }
     if (!applyOptions(shell, window, options))
         return 2;
-    if (!placed)
-        window.resize(1400, 900);
+    if (!placed) // a first start: as large as the screen's free area allows, up to 1400 x 900
+        window.setGeometry(ab::ui::WindowSettings::firstStartGeometry(window.screen()->availableGeometry()));
     window.show();
     if (options.lecture)
         shell.lecture().setActive(true);

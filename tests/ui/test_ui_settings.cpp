@@ -71,6 +71,18 @@ private slots:
         QCOMPARE(w.controller().spec().params.real("k"), 0.9);
     }
 
+    void aFirstStartFitsTheScreensFreeArea()
+    {
+        using ab::ui::WindowSettings;
+        // Room for 1400 x 900 and a title bar: that size, centred.
+        QCOMPARE(WindowSettings::firstStartGeometry(QRect(0, 0, 1920, 1080)), QRect(260, 90, 1400, 900));
+        // A projector's 1280 x 720: the whole width, the height less the title bar, never
+        // larger than the screen (it opened at 1400 x 900, its right end off the screen).
+        QCOMPARE(WindowSettings::firstStartGeometry(QRect(0, 0, 1280, 720)), QRect(0, 30, 1280, 690));
+        // A panel at the top: the free area starts below it.
+        QCOMPARE(WindowSettings::firstStartGeometry(QRect(0, 40, 1366, 728)), QRect(0, 70, 1366, 698));
+    }
+
     void aboutBoxCreditsTheReportAndItsAuthors()
     {
         QCoreApplication::setApplicationVersion("9.8.7");

@@ -6,6 +6,8 @@
 
 #include <QSettings>
 
+#include <algorithm>
+
 namespace ab::ui {
 
 namespace {
@@ -72,6 +74,17 @@ void WindowSettings::rememberCurrentScene()
     } catch (const InputError&) {
         // A setup that cannot be written as a preset is not remembered; the last good one stays.
     }
+}
+
+QRect WindowSettings::firstStartGeometry(const QRect& available)
+{
+    const QSize wanted(1400, 900), frame(0, 30); // a title bar's height for the window manager
+    const QSize room = available.size() - frame;
+    const QSize size = wanted.boundedTo(room).expandedTo(QSize(640, 480));
+    // Centred in the free area, its frame inside it.
+    const QPoint at(available.x() + std::max(0, (available.width() - size.width()) / 2),
+                    available.y() + std::max(frame.height(), (available.height() - size.height()) / 2));
+    return QRect(at, size);
 }
 
 } // namespace ab::ui

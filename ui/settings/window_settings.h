@@ -6,6 +6,7 @@
 #pragma once
 
 #include <QObject>
+#include <QRect>
 #include <QStringList>
 
 class QSettings;
@@ -27,6 +28,11 @@ public:
     // Stores the geometry, the last stage and its setup (the camera included).
     void save();
     const QStringList& skipped() const { return skipped_; }
+
+    // A first start's window on a screen whose free area is `available`: 1400 x 900 where
+    // that fits with room for a window frame, else the free area less that room (a 1280 x
+    // 720 screen: 1280 x 690), never more.
+    static QRect firstStartGeometry(const QRect& available);
 
 private:
     void rememberCurrentScene();
