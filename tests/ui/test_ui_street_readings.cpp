@@ -246,6 +246,32 @@ private slots:
                  qPrintable(QStringLiteral("%1 rows").arg(bottom - top)));
     }
 
+    void aLabelWhosePointIsOutOfViewIsNotDrawn()
+    {
+        // The flood shot looks down the street from below its top: the top's label point lies
+        // above the picture. Moved into a corner, the label would name the wrong place.
+        const QSize size(600, 300);
+        OrbitCamera camera;
+        camera.frame({0, 0, 0}, {10, 10, 10}, 0.0f, 0.0f, float(size.width()) / float(size.height()));
+        SceneGeometry geometry;
+        for (const QVector3D at : {QVector3D(5, 40, 5), QVector3D(5, -30, 5)}) { // above, below the view
+            QPointF p;
+            QVERIFY(!camera.project(at, size, p) || p.y() < 0.0 || p.y() > size.height());
+            geometry.labels.push_back({at, QStringLiteral("top"), QColor(0xd0, 0, 0)});
+        }
+        QImage image(size, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        QFont font;
+        font.setPointSizeF(14.0);
+        paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
+        painter.end();
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x)
+                QVERIFY2(image.pixelColor(x, y) == QColor(Qt::white),
+                         qPrintable(QString("drawn at %1,%2").arg(x).arg(y)));
+    }
+
     void aBallCountedGoneIsNeverDrawnAndOneOnTheStreetAlwaysIs()
     {
         // The view hides a ball by its frame's float x; the census and the charts count it

@@ -23,6 +23,7 @@ struct SceneLabel {
     QVector3D at;
     QString text;
     QColor colour;
+    bool above = false; // drawn just above its point (a line it names), else centred on it
 };
 
 struct SceneGeometry {

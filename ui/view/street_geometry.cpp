@@ -186,7 +186,9 @@ void addKerbsAndLabels(SceneGeometry& g, const street::Layout& s, const QString&
     const auto across = float(0.5 * s.width + s.sidewalk);
     const auto foot = float(s.xFoot);
     line({foot, kLift, -across}, {foot, kLift, across}, footRed);
-    g.labels.push_back({QVector3D(foot, 1.5f, 0.0f), QCoreApplication::translate("SceneGeometry", "foot"), footRed});
+    // Just over the foot's line, not on it, from any distance.
+    g.labels.push_back(
+        {QVector3D(foot, kLift, 0.0f), QCoreApplication::translate("SceneGeometry", "foot"), footRed, true});
     g.labels.push_back({QVector3D(float(s.xTop), float(s.height + 8.0), 0.0f),
                         QCoreApplication::translate("SceneGeometry", "top, %1 %2 above the foot")
                             .arg(QString::number(s.height, 'f', 1), unit),

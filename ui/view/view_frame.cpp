@@ -152,7 +152,10 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
     QPointF at;
     const QFontMetricsF fm(font);
     for (const SceneLabel& label : geometry.labels) {
-        if (!camera.project(label.at, size, at) || at.x() < 0.0 || at.x() > size.width())
+        // A label whose point is out of view is not drawn: moved in, it would name the wrong place
+        // (the top's label in a corner of the flood shot, the top far above the picture).
+        if (!camera.project(label.at, size, at) || at.x() < 0.0 || at.x() > size.width() || at.y() < 0.0 ||
+            at.y() > size.height())
             continue;
         // A label whose point is in view is read whole: moved in from the edge it would cross
         // (drawn centred on its point, across and up and down).
@@ -160,6 +163,8 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
         auto inside = [](double v, double half, double extent) {
             return std::clamp(v, std::min(half, extent / 2.0), std::max(extent - half, extent / 2.0));
         };
+        if (label.above)
+            at.setY(at.y() - 0.5 * fm.height() - 2.0); // its text's middle, clear of the line
         at.setX(inside(at.x(), fm.horizontalAdvance(label.text) / 2.0 + 3.0, size.width()));
         at.setY(inside(at.y(), fm.height() / 2.0 + 3.0, size.height()));
         drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
