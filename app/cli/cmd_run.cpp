@@ -53,6 +53,10 @@ struct Summary {
             maxSpeed = std::max(maxSpeed, s.v.colwise().norm().maxCoeff());
     }
 
+    // For reading, not for reading back: 12 significant digits, so that the round-off of 300
+    // steps of 1/60 s reads 5, not 4.999999999999988 (the CSV keeps every digit).
+    static std::string readable(double x) { return formatSignificant(x, 12); }
+
     void print(std::ostream& out, const Simulation& sim, const State& last) const
     {
         const SceneInfo& info = sim.scene();
@@ -60,11 +64,10 @@ struct Summary {
         out << info.key << " (stage " << info.stage << "), " << modelKey(spec.model) << " model";
         if (spec.model == ModelKind::Physical)
             out << ", " << integratorKey(spec.integrator);
-        out << ", dt " << formatNumber(sim.dt()) << " " << info.timeUnit << ", " << (states - 1)
-            << " steps to t = " << formatNumber(last.t) << " " << info.timeUnit << "\n";
+        out << ", dt " << formatStep(sim.dt()) << " " << info.timeUnit << ", " << (states - 1)
+            << " steps to t = " << readable(last.t) << " " << info.timeUnit << "\n";
         if (firstContactIndex >= 0)
-            out << "first contact: in the step from t = " << formatNumber(firstContactT) << " " << info.timeUnit
-                << "\n";
+            out << "first contact: in the step from t = " << readable(firstContactT) << " " << info.timeUnit << "\n";
         // The report's counters (a scene's `count`, stage 4's bounces per ball); the engines
         // that count impacts instead (many-balls' physical model, the street) say so.
         if (contacts > 0 || impacts == 0)
@@ -73,15 +76,14 @@ struct Summary {
             out << "impacts: " << impacts << " (ball on ball and on "
                 << (spec.scene == SceneId::Street ? "the street" : "the walls") << ", each contact once)\n";
         if (haltT >= 0.0)
-            out << "the report's bounce limit stopped the motion at t = " << formatNumber(haltT) << " " << info.timeUnit
+            out << "the report's bounce limit stopped the motion at t = " << readable(haltT) << " " << info.timeUnit
                 << "\n";
-        out << "largest speed: " << formatNumber(maxSpeed) << " " << info.lengthUnit << "/" << info.timeUnit << "\n";
+        out << "largest speed: " << readable(maxSpeed) << " " << info.lengthUnit << "/" << info.timeUnit << "\n";
         const int shown = std::min(last.size(), 3);
         for (int i = 0; i < shown; ++i)
-            out << "ball " << i << " at the end: position (" << formatNumber(last.p(0, i)) << ", "
-                << formatNumber(last.p(1, i)) << ", " << formatNumber(last.p(2, i)) << "), velocity ("
-                << formatNumber(last.v(0, i)) << ", " << formatNumber(last.v(1, i)) << ", "
-                << formatNumber(last.v(2, i)) << ")\n";
+            out << "ball " << i << " at the end: position (" << readable(last.p(0, i)) << ", " << readable(last.p(1, i))
+                << ", " << readable(last.p(2, i)) << "), velocity (" << readable(last.v(0, i)) << ", "
+                << readable(last.v(1, i)) << ", " << readable(last.v(2, i)) << ")\n";
     }
 };
 
@@ -123,6 +125,10 @@ int runCommand(Parsed& args, std::ostream& out, std::ostream& err)
     bool diverged = false;
     const double tEnd = start.t + static_cast<double>(setup.steps) * sim->dt();
     const bool csvOnTerminal = !outPath && !summary && RunProgress::isTerminal(out); // rows show it going
+    // For a person at a terminal, as the progress is (a script's standard error keeps its one line).
+    if (!summary && !args.flag("quiet") && RunProgress::isTerminal(err))
+        if (const auto note = largeTrajectoryNote(start.size(), setup.steps, every, spin))
+            err << "amazeballs-cli: run: note: " << *note << std::endl; // before the run, not after
     RunProgress progress(err, !args.flag("quiet") && !csvOnTerminal && RunProgress::isTerminal(err), setup.steps, tEnd,
                          sim->scene().timeUnit);
     auto simulate = [&](std::ostream* csv) {

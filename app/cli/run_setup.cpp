@@ -127,4 +127,17 @@ RunSetup readRunSetup(Parsed& args)
     return setup;
 }
 
+std::optional<std::string> largeTrajectoryNote(long long balls, long long steps, long long every, bool spin)
+{
+    const long long rows = balls * (steps / every + 1);
+    const double megabytes = double(rows) * 18.0 * (spin ? 11.0 : 8.0) / 1e6;
+    if (megabytes < 100.0)
+        return std::nullopt;
+    // Two significant figures: 594 reads "590".
+    const double scale = std::pow(10.0, std::floor(std::log10(megabytes)) - 1.0);
+    return "about " + formatNumber(std::round(megabytes / scale) * scale) + " MB of CSV (" + std::to_string(rows) +
+           " rows: every ball at every " + (every > 1 ? "recorded " : "") +
+           "step); --every K writes every K-th step, --summary a few lines";
+}
+
 } // namespace ab::cli

@@ -24,4 +24,10 @@ void applyAssignment(RunSpec& spec, const std::string& assignment);
 // Reads SCENE and the run options from `args` (removing them); throws InputError.
 RunSetup readRunSetup(Parsed& args);
 
+// What `run` says on a terminal before writing a trajectory CSV of more than 100 MB: its size and what
+// --every and --summary write instead; nothing for a smaller one. `states`: steps / every + 1
+// rows of `balls` balls, each row t, ball and 6 numbers (9 with spins) of about 18
+// characters in the shortest round-trip form.
+std::optional<std::string> largeTrajectoryNote(long long balls, long long steps, long long every, bool spin);
+
 } // namespace ab::cli

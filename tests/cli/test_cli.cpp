@@ -2,6 +2,8 @@
 // amazeballs-cli run in process: list, run (reproducing the report's listings), and
 // every kind of bad input giving exit status 2 with one line naming it.
 #include "support/cli_runner.h"
+
+#include "app/cli/run_setup.h"
 #include "support/report_listings.h"
 
 #include "support/sim_helpers.h"
@@ -142,6 +144,22 @@ private slots:
             testing::record(testing::spec(ab::SceneId::Street, {"n=300"}, ab::ModelKind::Physical), 60).back();
         QVERIFY(s.impacts > 300); // every ball landed on the road at least once
         QCOMPARE(printed, s.impacts);
+        // Its times as a person writes them: 60 steps of 1/60 s are 1 s, whatever the round-off.
+        QVERIFY2(r.out.find(", dt 1/60 s, 60 steps to t = 1 s\n") != std::string::npos, r.out.c_str());
+    }
+
+    void aTrajectoryOver100MegabytesIsAnnouncedWithWhatWritesLess()
+    {
+        // The street's 10,000 balls every 1/60 s for 5 s with spins: 10,000 x 301 rows of 11
+        // numbers of about 18 characters, 596 MB (586 MB written): said before the run.
+        const auto note = ab::cli::largeTrajectoryNote(10000, 300, 1, true);
+        QVERIFY(note);
+        QCOMPARE(*note, std::string("about 600 MB of CSV (3010000 rows: every ball at every step); --every K writes "
+                                    "every K-th step, --summary a few lines"));
+        QVERIFY(!ab::cli::largeTrajectoryNote(10000, 300, 10, true)); // 31 states: 61 MB
+        QVERIFY(!ab::cli::largeTrajectoryNote(2, 30000, 1, false));   // stage 3's run: 8.6 MB
+        // The command says it on a terminal only: a script's standard error keeps its one line
+        // (test_cli_hostile's interrupted runs of terabytes say only that they were interrupted).
     }
 
     void everyKeepsEveryKthStateAndTEndSetsTheLength()
