@@ -1159,10 +1159,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Bollar förbi varje kvarters fot</translation>
     </message>
     <message>
-        <source>balls per %1</source>
-        <translation>bollar per %1</translation>
-    </message>
-    <message>
         <source>Speeds of the balls on the street</source>
         <translation>Farterna hos bollarna på gatan</translation>
     </message>
@@ -1249,6 +1245,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>left at the foot</source>
         <translation>lämnat vid foten</translation>
+    </message>
+    <message>
+        <source>balls per %1, net</source>
+        <translation>bollar per %1, netto</translation>
     </message>
 </context>
 <context>

@@ -116,7 +116,9 @@ void MotionChart::nameChart(const SceneInfo& scene, int ball, const ChartUnits& 
         break;
     case ChartKind::FootRate:
         titleForms_ = {tr("Balls passing the foot of each block"), tr("Balls past each foot")};
-        valueAxis_->setTitleText(tr("balls per %1").arg(time));
+        // Net: balls that roll back up past a foot (superballs off a house front) count less,
+        // and a foot the flood climbs back over reads below zero for that while.
+        valueAxis_->setTitleText(tr("balls per %1, net").arg(time));
         nameFeet(names, units.streetBlocks);
         break;
     case ChartKind::Speeds:
