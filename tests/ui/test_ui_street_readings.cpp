@@ -32,6 +32,31 @@ using testing::defaultStreet;
 using testing::stateAt;
 using testing::streetSpec;
 
+namespace {
+
+// The labels of `geometry` as `camera` draws them over a view of `size`, in 14 pt on white.
+QImage paintedLabels(const OrbitCamera& camera, QSize size, const SceneGeometry& geometry)
+{
+    QImage image(size, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    QFont font;
+    font.setPointSizeF(14.0);
+    paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
+    painter.end();
+    return image;
+}
+
+// A camera framing the cube [0, 10]^3 from the front, level, for a view of `size`.
+OrbitCamera frontOfCube(QSize size)
+{
+    OrbitCamera camera;
+    camera.frame({0, 0, 0}, {10, 10, 10}, 0.0f, 0.0f, float(size.width()) / float(size.height()));
+    return camera;
+}
+
+} // namespace
+
 class UiStreetReadings : public QObject {
     Q_OBJECT
 
@@ -218,8 +243,7 @@ private slots:
         // point, half of it would fall outside. Moved in, every pixel of its red text lies
         // inside with the halo's margin: the rows touching the edges hold none.
         const QSize size(600, 300);
-        OrbitCamera camera;
-        camera.frame({0, 0, 0}, {10, 10, 10}, 0.0f, 0.0f, float(size.width()) / float(size.height()));
+        const OrbitCamera camera = frontOfCube(size);
         QVector3D at(5, 5, 5);
         QPointF pixel;
         for (float y = 5.0f; y > -50.0f; y -= 0.01f) // down to the last point still in view
@@ -228,13 +252,9 @@ private slots:
         QVERIFY(pixel.y() > size.height() - 3.0);
         SceneGeometry geometry;
         geometry.labels.push_back({at, QStringLiteral("foot"), QColor(0xd0, 0, 0)});
-        QImage image(size, QImage::Format_RGB32);
-        image.fill(Qt::white);
-        QPainter painter(&image);
+        const QImage image = paintedLabels(camera, size, geometry);
         QFont font;
         font.setPointSizeF(14.0);
-        paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
-        painter.end();
         int top = size.height(), bottom = -1;
         for (int y = 0; y < size.height(); ++y)
             for (int x = 0; x < size.width(); ++x)
@@ -251,21 +271,14 @@ private slots:
         // The flood shot looks down the street from below its top: the top's label point lies
         // above the picture. Moved into a corner, the label would name the wrong place.
         const QSize size(600, 300);
-        OrbitCamera camera;
-        camera.frame({0, 0, 0}, {10, 10, 10}, 0.0f, 0.0f, float(size.width()) / float(size.height()));
+        const OrbitCamera camera = frontOfCube(size);
         SceneGeometry geometry;
         for (const QVector3D at : {QVector3D(5, 40, 5), QVector3D(5, -30, 5)}) { // above, below the view
             QPointF p;
             QVERIFY(!camera.project(at, size, p) || p.y() < 0.0 || p.y() > size.height());
             geometry.labels.push_back({at, QStringLiteral("top"), QColor(0xd0, 0, 0)});
         }
-        QImage image(size, QImage::Format_RGB32);
-        image.fill(Qt::white);
-        QPainter painter(&image);
-        QFont font;
-        font.setPointSizeF(14.0);
-        paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
-        painter.end();
+        const QImage image = paintedLabels(camera, size, geometry);
         for (int y = 0; y < size.height(); ++y)
             for (int x = 0; x < size.width(); ++x)
                 QVERIFY2(image.pixelColor(x, y) == QColor(Qt::white),
