@@ -9,8 +9,10 @@
 //   model's masses), momentum_x, _y, _z, moving (balls), impacts (since the start), and
 //   where the balls turn wx, wy, wz (the ball's angular velocity, rad/T) and
 //   energy_translation, energy_rotation (the kinetic energy's parts); on the street
-//   past_foot_<k> (balls past the foot of each charted block k, 1-based) and speed_p10,
-//   speed_median, speed_p90, speed_max (of the balls on the street);
+//   past_foot_<k> (balls past the foot of each charted block k, 1-based), speed_p10,
+//   speed_median, speed_p90, speed_max (of the balls on the street; empty once none is) and
+//   energy_left (what the balls that left at the foot took with them); the ball's own cells
+//   (position, velocity, spin) are empty once it has left at the street's foot;
 //   with a closed form: x_closed_form ... vz_closed_form at the row's time (empty where it
 //   does not apply); with a comparison run: compare_t and the same columns prefixed
 //   `compare_`, from the comparison's last sample at or before the row's time (the same
