@@ -27,11 +27,8 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QSlider>
 #include <QToolButton>
-#include <QWheelEvent>
 #include <QtTest>
 
 #include <cmath>
@@ -226,67 +223,6 @@ private slots:
         QTest::keyClick(k, Qt::Key_Escape);
         QCOMPARE(k->text(), QString("0.5"));
         QCOMPARE(w.controller().spec().params.real("k"), 0.5);
-    }
-
-    void aRefusedEntrysReasonIsShownUnderItsFieldInSight()
-    {
-        // The street's slope is far down a long panel: its reason stands right under it, in
-        // the panel's visible part, not at the panel's foot below the fold.
-        MainWindow w;
-        w.resize(1280, 720);
-        w.showScene(SceneId::Street);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QLineEdit* slope = w.parameters()->field("slope");
-        auto* note = w.findChild<QLabel*>("paramError-slope");
-        QVERIFY(slope && note && note->isHidden());
-        typeInto(slope, "-5");
-        QCOMPARE(w.controller().spec().params.real("slope"), 17.0); // nothing applied
-        QVERIFY(QTest::qWaitFor([&] { return note->isVisible(); }));
-        QVERIFY2(note->text().startsWith("Not applied: slope: -5"), qPrintable(note->text()));
-        QApplication::processEvents(); // the scroll to the reason
-        const QPoint below = note->mapTo(slope->parentWidget(), QPoint(0, 0));
-        QVERIFY(below.y() > slope->geometry().bottom() && below.y() - slope->geometry().bottom() < 40);
-        auto* area = w.findChild<QScrollArea*>("settingsScroll");
-        QVERIFY(area);
-        const QRect seen = area->viewport()->rect();
-        const QRect noteRect(note->mapTo(area->viewport(), QPoint(0, 0)), note->size());
-        QVERIFY2(seen.contains(noteRect), qPrintable(QString("note at %1,%2 %3x%4 in a viewport of height %5")
-                                                         .arg(noteRect.x())
-                                                         .arg(noteRect.y())
-                                                         .arg(noteRect.width())
-                                                         .arg(noteRect.height())
-                                                         .arg(seen.height())));
-        QVERIFY(w.findChild<QLabel*>("parameterError")->isHidden()); // nothing for the whole panel
-    }
-
-    void aWheelOverAChoiceScrollsTheSettingsAndChangesNothing()
-    {
-        // Scrolling down the settings column with the wheel passes over the model, integrator
-        // and impacts choices: unless one was clicked first, the column scrolls, the choice stays.
-        MainWindow w;
-        w.resize(1280, 720);
-        w.showScene(SceneId::Street); // its impacts are the physical model's, open to change
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        auto* area = w.findChild<QScrollArea*>("settingsScroll");
-        auto* impacts = w.findChild<QComboBox*>("impactsCombo");
-        QVERIFY(area && impacts && impacts->isEnabled());
-        QVERIFY(area->verticalScrollBar()->maximum() > 0);
-        const int choice = impacts->currentIndex(), scrolled = area->verticalScrollBar()->value();
-        auto wheel = [&] {
-            const QPointF at(impacts->width() / 2.0, impacts->height() / 2.0);
-            QWheelEvent down(at, impacts->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
-                             Qt::NoScrollPhase, false);
-            QApplication::sendEvent(impacts, &down);
-        };
-        wheel();
-        QCOMPARE(impacts->currentIndex(), choice);
-        QVERIFY(area->verticalScrollBar()->value() > scrolled);
-        impacts->setFocus(); // chosen with a click or Tab: the wheel turns it
-        QVERIFY(QTest::qWaitFor([&] { return impacts->hasFocus(); }));
-        wheel();
-        QVERIFY(impacts->currentIndex() != choice);
     }
 
     void anInvalidEntryStaysInRedUntilFixedWhenAnotherFieldIsEdited()
