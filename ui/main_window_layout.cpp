@@ -62,19 +62,20 @@ private:
     QWidget* scroll_;
 };
 
-// A choice in the scrolling settings column turns with the wheel only once it has the focus
-// (a click or Tab): a wheel turned over it on the way down the column scrolls the column, and
-// does not change the model, the integrator or the impacts on the way.
-class WheelOnlyWhenFocused : public QObject {
+// A wheel turned over a choice in the scrolling settings column scrolls the column and never
+// turns the choice, focused or not: on the way down the column it would change the model, the
+// integrator or the impacts, and with them start the run again. A choice is made with a click
+// or the keys.
+class WheelScrollsTheColumn : public QObject {
 public:
-    WheelOnlyWhenFocused(QWidget* widget, QAbstractScrollArea* column) : QObject(widget), column_(column)
+    WheelScrollsTheColumn(QWidget* widget, QAbstractScrollArea* column) : QObject(widget), column_(column)
     {
         widget->setFocusPolicy(Qt::StrongFocus); // the wheel gives it no focus either
         widget->installEventFilter(this);
     }
     bool eventFilter(QObject* watched, QEvent* event) override
     {
-        if (event->type() != QEvent::Wheel || static_cast<QWidget*>(watched)->hasFocus())
+        if (event->type() != QEvent::Wheel)
             return QObject::eventFilter(watched, event);
         QCoreApplication::sendEvent(column_->viewport(), event); // the column's own wheel
         return true;
@@ -212,7 +213,7 @@ QWidget* MainWindow::buildLeftPanel()
     // the viewport's, below the layout's minimum, unless the widget's own minimum says no.)
     for (QComboBox* combo : settings->findChildren<QComboBox*>()) {
         combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-        new WheelOnlyWhenFocused(combo, scroll);
+        new WheelScrollsTheColumn(combo, scroll);
     }
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     new KeepLayoutMinimum(settings, scroll);

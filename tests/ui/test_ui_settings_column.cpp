@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The settings column on a long stage (the street's): a refused entry's reason stands under
 // its field, scrolled into sight; a wheel turned over a choice scrolls the column and leaves
-// the choice alone until the choice has the keys.
+// the choice alone, which the keys or a click still change; Ctrl+E in a field exports.
 #include "ui/main_window.h"
 #include "ui/panels/parameter_panel.h"
 #include "ui/sim/run_controller.h"
@@ -10,6 +10,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
@@ -60,7 +61,7 @@ private slots:
     void aWheelOverAChoiceScrollsTheSettingsAndChangesNothing()
     {
         // Scrolling down the settings column with the wheel passes over the model, integrator
-        // and impacts choices: unless one was clicked first, the column scrolls, the choice stays.
+        // and impacts choices: the column scrolls, the choice stays.
         MainWindow w;
         w.resize(1280, 720);
         w.showScene(SceneId::Street); // its impacts are the physical model's, open to change
@@ -80,10 +81,32 @@ private slots:
         wheel();
         QCOMPARE(impacts->currentIndex(), choice);
         QVERIFY(area->verticalScrollBar()->value() > scrolled);
-        impacts->setFocus(); // chosen with a click or Tab: the wheel turns it
-        QVERIFY(QTest::qWaitFor([&] { return impacts->hasFocus(); }));
-        wheel();
+        // Focused or not (the filter asks no focus: a turn would start the run again). The keys
+        // still choose.
+        QTest::keyClick(impacts, Qt::Key_Down);
         QVERIFY(impacts->currentIndex() != choice);
+    }
+
+    void ctrlWithALetterInAFieldIsTheWindowsShortcut()
+    {
+        // Typing a value, then Ctrl+E to export the chart: the field must not take Ctrl+E as
+        // X11's "end of line" (nothing opened). It keeps the keys it edits by.
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QLineEdit* field = w.parameters()->field("k");
+        QVERIFY(field);
+        auto claimed = [&](int key, Qt::KeyboardModifiers modifiers) {
+            QKeyEvent override(QEvent::ShortcutOverride, key, modifiers);
+            override.ignore();
+            QApplication::sendEvent(field, &override);
+            return override.isAccepted();
+        };
+        QVERIFY(!claimed(Qt::Key_E, Qt::ControlModifier));
+        QVERIFY(!claimed(Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier));
+        QVERIFY(claimed(Qt::Key_C, Qt::ControlModifier));    // copy
+        QVERIFY(claimed(Qt::Key_Z, Qt::ControlModifier));    // undo
+        QVERIFY(claimed(Qt::Key_Left, Qt::ControlModifier)); // a word back
     }
 };
 

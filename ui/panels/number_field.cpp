@@ -3,8 +3,12 @@
 
 #include <QEvent>
 #include <QKeyEvent>
+#include <QKeySequence>
 #include <QLineEdit>
 #include <QRegularExpression>
+
+#include <algorithm>
+#include <iterator>
 
 namespace ab::ui {
 
@@ -27,6 +31,26 @@ const QRegularExpression& patternOf(NumberKind kind)
         break;
     }
     return realRe;
+}
+
+// The keys with Ctrl that edit a field's text everywhere: clipboard, undo, select all, and
+// moving or deleting by words. Home and End move along the line without Ctrl.
+bool isEditingKey(const QKeyEvent& key)
+{
+    static const QKeySequence::StandardKey editing[] = {QKeySequence::Copy,
+                                                        QKeySequence::Cut,
+                                                        QKeySequence::Paste,
+                                                        QKeySequence::Undo,
+                                                        QKeySequence::Redo,
+                                                        QKeySequence::SelectAll,
+                                                        QKeySequence::MoveToNextWord,
+                                                        QKeySequence::MoveToPreviousWord,
+                                                        QKeySequence::SelectNextWord,
+                                                        QKeySequence::SelectPreviousWord,
+                                                        QKeySequence::DeleteStartOfWord,
+                                                        QKeySequence::DeleteEndOfWord};
+    return std::any_of(std::begin(editing), std::end(editing),
+                       [&](QKeySequence::StandardKey k) { return key.matches(k); });
 }
 
 } // namespace
@@ -54,6 +78,12 @@ bool NumberField::eventFilter(QObject* watched, QEvent* event)
     if (watched != field_ || (event->type() != QEvent::KeyPress && event->type() != QEvent::ShortcutOverride))
         return QObject::eventFilter(watched, event);
     const auto* key = static_cast<QKeyEvent*>(event);
+    if (event->type() == QEvent::ShortcutOverride && (key->modifiers() & Qt::ControlModifier) && !isEditingKey(*key)) {
+        // Ctrl with a letter is the window's (Ctrl+E exports the chart), not the line's: X11's
+        // emacs keys (Ctrl+E to the end of the line) would swallow it while a value is typed.
+        event->ignore();
+        return true;
+    }
     if (key->modifiers() & ~Qt::KeypadModifier)
         return false;
     if (key->key() == Qt::Key_Escape) {

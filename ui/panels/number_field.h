@@ -29,7 +29,8 @@ private:
 
 // Makes `field` a numeric field of `kind`: the validator above, Enter (after the field's
 // own editingFinished) emits done(), Esc emits reverted() and keeps the key from the
-// window (it does not leave full screen while a field is being edited).
+// window (it does not leave full screen while a field is being edited). Ctrl with a key the
+// field does not edit by (clipboard, undo, select all, words) goes to the window's shortcuts.
 class NumberField : public QObject {
     Q_OBJECT
 public:
