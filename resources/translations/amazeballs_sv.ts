@@ -1907,6 +1907,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot, and what the balls that left at the foot took with them: the mean over the %1 balls. All balls together: %2 %3, the energy chart&apos;s total</source>
         <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot, och det som bollarna som lämnat vid foten tog med sig: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, energidiagrammets totala</translation>
     </message>
+    <message>
+        <source>All %1 balls have left at the foot</source>
+        <translation>Alla %1 bollar har lämnat vid foten</translation>
+    </message>
+    <message>
+        <source>All have left at the foot</source>
+        <translation>Alla har lämnat vid foten</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StreetCameraBar</name>

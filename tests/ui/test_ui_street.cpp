@@ -17,8 +17,10 @@
 #include "ui/view/scene_geometry.h"
 #include "ui/view/street_camera.h"
 
+#include <QApplication>
 #include <QChartView>
 #include <QComboBox>
+#include <QEnterEvent>
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
@@ -243,6 +245,13 @@ private slots:
         QCOMPARE(now, panel.shownCharts().front());
         panel.pages()->setCurrentIndex(1);
         QCOMPARE(panel.currentChart(), pointed);
+        // The pointer passing over another chart on its way does not choose it: a click does.
+        panel.resize(600, 4000); // every chart on one page
+        QTRY_VERIFY(panel.onCurrentPage(ChartKind::Energy) && panel.onCurrentPage(ChartKind::Speeds));
+        QTest::mouseClick(panel.chartView(ChartKind::Energy)->viewport(), Qt::LeftButton);
+        QEnterEvent enter(QPointF(5, 5), QPointF(5, 5), QPointF(5, 5));
+        QApplication::sendEvent(panel.chartView(ChartKind::Speeds)->viewport(), &enter);
+        QCOMPARE(panel.currentChart(), ChartKind::Energy);
     }
 
     void chartPagesWhoseTabsDoNotFitAreChosenFromAList()

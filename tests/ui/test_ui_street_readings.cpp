@@ -146,6 +146,11 @@ private slots:
         readout.show(EngineStatus{}, &next);
         QCOMPARE(popup->text(),
                  QString("3 balls on the street, 3 past the first block's foot, 2 left at the foot; fastest 7.0 m/s"));
+        // All gone: no fastest ball on an empty street (it said "fastest 0.0 m/s").
+        const State gone = stateAt(s, std::vector<double>(5, s.xFoot + 1.0), std::vector<double>(5, 0.0), 30.0);
+        const Frame end = makeFrame(2, gone, ConservationSample{});
+        readout.show(EngineStatus{}, &end);
+        QCOMPARE(readout.warningText(), QString("All 5 balls have left at the foot"));
     }
 
     void aBallsOwnLinesEndWhereItLeavesAtTheFoot()

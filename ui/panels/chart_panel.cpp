@@ -399,7 +399,7 @@ bool ChartPanel::eventFilter(QObject* watched, QEvent* event)
         QChartView* view = views_[slot(kind)];
         if (!view || (watched != view && watched != view->viewport()))
             continue;
-        if (event->type() == QEvent::Enter || event->type() == QEvent::MouseButtonPress)
+        if (event->type() == QEvent::MouseButtonPress) // chosen with a click, not a pointer passing over
             current_ = kind;
         if (event->type() == QEvent::ContextMenu) {
             current_ = kind;

@@ -131,6 +131,10 @@ StatusReadout::Message StatusReadout::streetCensus(const Frame& shown) const
         if (k + 2 < shown.v.size())
             fastest = std::max(fastest, std::hypot(double(shown.v[k]), double(shown.v[k + 1]), double(shown.v[k + 2])));
     }
+    if (left == shown.balls()) { // none on the street: no fastest ball to name
+        const QString gone = tr("All %1 balls have left at the foot").arg(left);
+        return {gone, gone, Tone::Plain, tr("Balls on the street"), {tr("All have left at the foot")}};
+    }
     const QString speed = QString::number(fastest, 'f', 1);
     const QString text =
         tr("%1 balls on the street, %2 past the first block's foot, %3 left at the foot; fastest %4 m/s")
