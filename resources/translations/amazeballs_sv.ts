@@ -2183,6 +2183,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>%1× real time</source>
         <translation>%1× realtid</translation>
     </message>
+    <message>
+        <source>t = %1 of %2 %3</source>
+        <translation>t = %1 av %2 %3</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::WindowShell</name>

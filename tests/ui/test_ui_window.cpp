@@ -14,6 +14,7 @@
 #include "tests/support/sim_helpers.h"
 #include "tests/support/window_helpers.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -326,6 +327,29 @@ private slots:
         // And the charts' cursor stands there.
         QTRY_VERIFY(!w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points().isEmpty());
         QTRY_COMPARE(w.charts()->chart(ab::ui::ChartKind::Position)->cursorLine()->points().front().x(), 33.0);
+    }
+
+    void theTimeSliderKeepsItsLengthWhileHeld()
+    {
+        // Dragged from live, the label's long "looking back" form took room from the slider under
+        // the pointer: the handle ran ahead of it (aimed at 12 s, landed on 13.78 s).
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Bounce1d);
+        QVERIFY(testing::stepThenLookBack(w, 100, 1, 1) == std::nullopt); // live at the end
+        auto* label = w.findChild<QLabel*>("timeLabel");
+        QSlider* time = w.transport()->timeSlider();
+        QApplication::processEvents();
+        const int length = time->width();
+        time->setSliderDown(true); // held
+        time->setValue(time->maximum() / 3);
+        for (int i = 0; i < 5; ++i)
+            QApplication::processEvents(); // the layout's turn
+        QCOMPARE(time->width(), length);
+        QVERIFY2(label->text().startsWith("t = 33.") && !label->text().contains("looking back"),
+                 qPrintable(label->text()));
+        time->setSliderDown(false); // let go: the whole form
+        QTRY_VERIFY2(label->text().contains("looking back: Play goes on from here"), qPrintable(label->text()));
     }
 
     void chartsFollowTheChosenBall()

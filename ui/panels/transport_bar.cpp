@@ -79,6 +79,14 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
             emit speedRequested(speedFromSlider(v));
     });
     connect(time_, &QSlider::valueChanged, this, &TransportBar::scrubbed);
+    // While the slider is held, its length must not change under the pointer: the label keeps
+    // its width and reads the short form; the whole form, and its room, come on release.
+    connect(time_, &QSlider::sliderPressed, this, [this] { timeLabel_->setFixedWidth(timeLabel_->width()); });
+    connect(time_, &QSlider::sliderReleased, this, [this] {
+        timeLabel_->setMinimumWidth(200);
+        timeLabel_->setMaximumWidth(QWIDGETSIZE_MAX);
+        updateLabel();
+    });
     setPlaying(false);
     setSpeed(1.0);
     setRecorded(0.0, 0.0, QString());
@@ -171,7 +179,9 @@ void TransportBar::setShownTime(double t)
 void TransportBar::updateLabel()
 {
     const auto fmt = [](double t) { return QString::number(t, 'f', t < 100 ? 2 : 1); };
-    if (viewTime_)
+    if (viewTime_ && time_->isSliderDown())
+        timeLabel_->setText(tr("t = %1 of %2 %3").arg(fmt(shownTime_.value_or(*viewTime_)), fmt(end_), unit_));
+    else if (viewTime_)
         timeLabel_->setText(tr("t = %1 of %2 %3 (looking back: Play goes on from here)")
                                 .arg(fmt(shownTime_.value_or(*viewTime_)), fmt(end_), unit_));
     else
