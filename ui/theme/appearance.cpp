@@ -39,7 +39,8 @@ QFont scaled(QFont font, double scale)
 void styleSeries(QXYSeries* series, const Appearance& a, const QColor& plotArea)
 {
     QPen pen = base<QPen>(series, "ab_basePen", [series] { return series->pen(); });
-    pen.setWidthF(pen.widthF() * a.scale);
+    const bool projector = isHighContrast(a.theme);
+    pen.setWidthF(pen.widthF() * a.scale * (projector ? 1.5 : 1.0)); // as the axis lines
     QColor colour = pen.color();
     const QVariant shadows = series->property(comparisonOfProperty);
     if (shadows.isValid() && isDark(a.theme))
@@ -51,8 +52,10 @@ void styleSeries(QXYSeries* series, const Appearance& a, const QColor& plotArea)
     else if (isDark(a.theme) && colour.lightnessF() < 0.45f)
         colour = colour.lighter(150); // dark blues and purples vanish on a dark background
     // Every line 3:1 against the plot (WCAG 1.4.11): orange and light green on white,
-    // red and purple on the dark plot, would be below it.
-    pen.setColor(withContrast(colour, plotArea, 3.0));
+    // red and purple on the dark plot, would be below it. A high-contrast theme's lines, for a
+    // projector, ask text's 4.5:1: the total energy's purple (3.6:1) and the rotation's red
+    // (3.9:1) sank into the black plot as thin lines.
+    pen.setColor(withContrast(colour, plotArea, projector ? 4.5 : 3.0));
     series->setPen(pen);
 }
 

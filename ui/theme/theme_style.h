@@ -32,6 +32,7 @@ public:
 private:
     void drawFieldFrame(const QStyleOption* option, QPainter* painter) const;
     void drawCheckedFrame(const QStyleOption* option, QPainter* painter) const;
+    void drawSliderFrames(const QStyleOptionComplex* option, QPainter* painter, const QWidget* widget) const;
 
     QColor border_{0x6b, 0x6b, 0x6b};
 };
