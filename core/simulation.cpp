@@ -56,6 +56,22 @@ void checkInitialState(const RunSpec& spec, const State& s)
 
 } // namespace
 
+bool integratorOffered(SceneId scene, Integrator integrator)
+{
+    switch (scene) {
+    case SceneId::Street:
+        return integrator == Integrator::Event;
+    case SceneId::ManyBalls:
+        return integrator != Integrator::Event && integrator != Integrator::ImplicitEuler &&
+               integrator != Integrator::ImplicitMidpoint;
+    case SceneId::Bounce1d:
+    case SceneId::Box3d:
+    case SceneId::TwoBalls:
+        return true;
+    }
+    return true;
+}
+
 std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec)
 {
     const SceneInfo& info = sceneInfo(spec.scene);

@@ -87,6 +87,12 @@ protected:
 // builds the simulation; throws InputError naming what is wrong.
 std::unique_ptr<Simulation> makeSimulation(const RunSpec& spec);
 
+// Whether the physical model of `scene` steps with `integrator` at all, whatever its
+// constants: the street's flight is exact between events (event only); many-balls resolves
+// its contacts at each substep's end (no event) and has no spring contacts (no implicit
+// integrators). makeSimulation still refuses what constants rule out (event with drag).
+bool integratorOffered(SceneId scene, Integrator integrator);
+
 double defaultDt(SceneId scene, ModelKind model);
 long long defaultSteps(SceneId scene, ModelKind model);
 

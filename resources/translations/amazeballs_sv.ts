@@ -1507,6 +1507,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>The report&apos;s rules stop at the box; the street is the physical model&apos;s (report 3.1)</source>
         <translation>Rapportens regler slutar vid kuben; gatan hör till den fysikaliska modellen (rapporten 3.1)</translation>
     </message>
+    <message>
+        <source>Not offered on the street: its flight is exact between events (event)</source>
+        <translation>Erbjuds inte på gatan: dess flykt är exakt mellan händelserna (event)</translation>
+    </message>
+    <message>
+        <source>Not offered for many balls: their contacts are resolved at each substep&apos;s end, without spring contacts</source>
+        <translation>Erbjuds inte för många bollar: deras kontakter löses i slutet av varje delsteg, utan fjäderkontakter</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StabilityDialog</name>

@@ -321,6 +321,40 @@ private slots:
         QVERIFY(RunOptionsPanel::reportModelOffered(SceneId::ManyBalls));
     }
 
+    void onlyTheIntegratorsAStageStepsWithAreOffered()
+    {
+        // The street's flight is exact between events: the other integrators are greyed, saying
+        // why (choosing one drew a refusal in the command line's words, "--integrator: ...").
+        // Many-balls steps with the four explicit ones.
+        RunOptionsPanel panel;
+        RunOptions options;
+        options.model = ModelKind::Physical;
+        options.integrator = Integrator::Event;
+        options.steps = 100;
+        auto item = [&](QComboBox* box, int data) {
+            return qobject_cast<QStandardItemModel*>(box->model())->item(box->findData(data));
+        };
+        auto integrators = panel.findChild<QComboBox*>("integratorCombo");
+        QVERIFY(integrators);
+        panel.showOptions(sceneInfo(SceneId::Street), options);
+        for (Integrator i : allIntegrators()) {
+            const bool event = i == Integrator::Event;
+            QCOMPARE(item(integrators, int(i))->isEnabled(), event);
+            QCOMPARE(item(panel.compareBox(), int(ModelKind::Physical) * 100 + int(i))->isEnabled(), event);
+            if (!event)
+                QVERIFY(
+                    integrators->itemData(integrators->findData(int(i)), Qt::ToolTipRole).toString().contains("exact"));
+        }
+        options.integrator = Integrator::SymplecticEuler;
+        panel.showOptions(sceneInfo(SceneId::ManyBalls), options);
+        for (Integrator i : allIntegrators())
+            QCOMPARE(item(integrators, int(i))->isEnabled(),
+                     i != Integrator::Event && i != Integrator::ImplicitEuler && i != Integrator::ImplicitMidpoint);
+        panel.showOptions(sceneInfo(SceneId::Box3d), options);
+        for (Integrator i : allIntegrators())
+            QVERIFY(item(integrators, int(i))->isEnabled());
+    }
+
     void streetIsDrawnAsRoadHousesAndCars()
     {
         const SceneLayout plain = layoutFor(streetSpec(10, 0));

@@ -234,6 +234,26 @@ void RunOptionsPanel::offerReportModel(bool offered)
     noReport_->setVisible(!offered);
 }
 
+void RunOptionsPanel::offerIntegrators(SceneId scene)
+{
+    const QString why = scene == SceneId::Street
+                            ? tr("Not offered on the street: its flight is exact between events (event)")
+                            : tr("Not offered for many balls: their contacts are resolved at each substep's end, "
+                                 "without spring contacts");
+    for (Integrator i : allIntegrators()) {
+        const bool offered = integratorOffered(scene, i);
+        for (auto [box, code] :
+             {std::pair{integrator_, int(i)}, std::pair{compare_, compareCode(ModelKind::Physical, i)}}) {
+            auto* items = qobject_cast<QStandardItemModel*>(box->model());
+            const int at = box->findData(code);
+            if (!items || at < 0)
+                continue;
+            items->item(at)->setEnabled(offered);
+            box->setItemData(at, offered ? QVariant() : QVariant(why), Qt::ToolTipRole);
+        }
+    }
+}
+
 void RunOptionsPanel::showScheme()
 {
     const bool report = shown_.model == ModelKind::Report;
@@ -265,6 +285,7 @@ void RunOptionsPanel::showOptions(const SceneInfo& scene, const RunOptions& opti
     scene_ = &scene;
     shown_ = options;
     offerReportModel(reportModelOffered(scene.id));
+    offerIntegrators(scene.id);
     showScheme(); // the report's entries go where the physical choices now show
     selectData(model_, int(options.model));
     selectData(integrator_, int(options.integrator));

@@ -68,6 +68,9 @@ private:
     // The report model's own scheme in the greyed boxes, the physical model's choices else.
     void showScheme();
     void offerReportModel(bool offered);
+    // The integrators the stage's physical model steps with: the others greyed, saying why,
+    // in the integrator and comparison lists (integratorOffered).
+    void offerIntegrators(SceneId scene);
 
     const SceneInfo* scene_ = nullptr;
     RunOptions shown_;
