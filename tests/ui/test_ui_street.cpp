@@ -55,6 +55,22 @@ bool onScreen(const QPointF& p, QSize size)
     return p.x() >= 0 && p.y() >= 0 && p.x() <= size.width() && p.y() <= size.height();
 }
 
+// The street's own run options: the physical model, stepping by events.
+RunOptions streetOptions()
+{
+    RunOptions options;
+    options.model = ModelKind::Physical;
+    options.integrator = Integrator::Event;
+    options.steps = 100;
+    return options;
+}
+
+// The entry of `box` whose data is `data`.
+QStandardItem* itemOf(QComboBox* box, int data)
+{
+    return qobject_cast<QStandardItemModel*>(box->model())->item(box->findData(data));
+}
+
 } // namespace
 
 class UiStreet : public QObject {
@@ -298,13 +314,8 @@ private slots:
     void reportModelIsNotOfferedForTheStreet()
     {
         RunOptionsPanel panel;
-        RunOptions options;
-        options.model = ModelKind::Physical;
-        options.integrator = Integrator::Event;
-        options.steps = 100;
-        auto reportItem = [&](QComboBox* box, int data) {
-            return qobject_cast<QStandardItemModel*>(box->model())->item(box->findData(data));
-        };
+        const RunOptions options = streetOptions();
+        const auto reportItem = itemOf;
         panel.showOptions(sceneInfo(SceneId::Street), options);
         auto* reason = panel.findChild<QLabel*>("noReportModel");
         QVERIFY(reason);
@@ -327,13 +338,8 @@ private slots:
         // why (choosing one drew a refusal in the command line's words, "--integrator: ...").
         // Many-balls steps with the four explicit ones.
         RunOptionsPanel panel;
-        RunOptions options;
-        options.model = ModelKind::Physical;
-        options.integrator = Integrator::Event;
-        options.steps = 100;
-        auto item = [&](QComboBox* box, int data) {
-            return qobject_cast<QStandardItemModel*>(box->model())->item(box->findData(data));
-        };
+        RunOptions options = streetOptions();
+        const auto item = itemOf;
         auto integrators = panel.findChild<QComboBox*>("integratorCombo");
         QVERIFY(integrators);
         panel.showOptions(sceneInfo(SceneId::Street), options);
