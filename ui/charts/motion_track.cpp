@@ -115,7 +115,7 @@ std::size_t MotionTrack::streetSamples() const
 }
 
 void addState(MotionTrack& track, long long step, const State& s, int ball, const ConservationSample& scene,
-              const street::Layout* street)
+              const street::Layout* street, const StreetSample* measured)
 {
     const Eigen::Index b = ball;
     if (!street) {
@@ -124,7 +124,7 @@ void addState(MotionTrack& track, long long step, const State& s, int ball, cons
     }
     if (street::hasLeft(*street, s.p(0, b)))
         track.markBallGone(step);
-    track.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(ball), scene, measureStreet(*street, s));
+    track.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(ball), scene, measured ? *measured : measureStreet(*street, s));
 }
 
 void MotionTrack::thin()

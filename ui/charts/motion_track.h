@@ -94,10 +94,11 @@ private:
 };
 
 // Offers state `s` of step `step` to `track`: ball `ball`'s motion, `scene` (the state's
-// ConservationSample) and, on `street` (null for the other scenes), its own sample; a ball
-// that has left at the street's foot ends its own lines there (markBallGone).
+// ConservationSample) and, on `street` (null for the other scenes), its own sample (`measured`
+// where the caller has it, else measured here); a ball that has left at the street's foot ends
+// its own lines there (markBallGone).
 void addState(MotionTrack& track, long long step, const State& s, int ball, const ConservationSample& scene,
-              const street::Layout* street);
+              const street::Layout* street, const StreetSample* measured = nullptr);
 
 // Impacts per unit of time at every kept sample: the impacts counted over the window
 // (t - window, t], divided by the time that window spans (shorter at the start). A

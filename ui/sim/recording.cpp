@@ -50,12 +50,9 @@ Recording::Recording(const SceneLayout& layout, const ConservationMeter& meter, 
 
 void Recording::add(long long step, const State& s)
 {
-    const Eigen::Index b = trackedBall_;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
     const StreetSample street = layout_.street ? measureStreet(*layout_.street, s) : StreetSample{}; // two more
-    if (layout_.street && street::hasLeft(*layout_.street, s.p(0, b)))
-        track_.markBallGone(step);
-    track_.add(step, s.t, s.p.col(b), s.v.col(b), s.spin(trackedBall_), scene, street);
+    addState(track_, step, s, trackedBall_, scene, layout_.street ? &*layout_.street : nullptr, &street);
     orientations_.follow(s); // every step: the balls turn between the kept frames too
     if (step % frameStride_ != 0)
         return;
