@@ -211,6 +211,35 @@ private slots:
         QVERIFY(std::abs(view->camera().eye().z() - (before.z() - 2.0f)) < 1e-3f);
     }
 
+    void onTheStreetTheWheelStopsTheEyeOverTheRoad()
+    {
+        // The foot shot's target lies inside the hill: forty notches straight at it took the
+        // eye under the road. Now the wheel zooms towards the road under the pointer and stops
+        // the eye half a metre over it.
+        MainWindow& w = open(SceneId::Street);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        waitForFrame(view);
+        QVERIFY(view->streetShot() == ab::ui::StreetShot::Foot);
+        const std::shared_ptr<const ab::street::Layout> street = ab::ui::layoutFor(w.controller().spec()).street;
+        QVERIFY(street);
+        const auto overRoad = [&] {
+            const QVector3D eye = view->camera().eye();
+            return eye.y() - float(street->roadY(double(eye.x())));
+        };
+        const QPointF centre(0.5 * view->width(), 0.5 * view->height());
+        const float before = view->camera().distance();
+        for (int notch = 0; notch < 40; ++notch) {
+            QWheelEvent wheel(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QCoreApplication::sendEvent(view, &wheel);
+            QVERIFY2(overRoad() >= ab::ui::kStreetEyeClearance - 1e-3f,
+                     qPrintable(QStringLiteral("notch %1: %2 m").arg(notch + 1).arg(overRoad())));
+        }
+        QVERIFY(view->camera().distance() < 0.2f * before);
+        QVERIFY(!view->streetShot()); // moved by hand: the shot's button is let go
+    }
+
     void aViewMadeSmallerFramesTheWholeBoxAgain()
     {
         // A view made smaller draws itself again with the whole box framed for its new shape.

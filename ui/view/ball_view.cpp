@@ -4,16 +4,12 @@
 #include "view_frame.h"
 
 #include <QGuiApplication>
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
 #include <QSurfaceFormat>
-#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace ab::ui {
 
@@ -82,6 +78,9 @@ void BallView::setScene(const SceneLayout& layout, const QString& lengthUnit, st
     const bool regionChanged = !layout_.region.isApprox(layout.region) || layout_.walls != layout.walls;
     layout_ = layout;
     geometry_ = buildSceneGeometry(layout, lengthUnit);
+    solids_.reset();
+    if (layout_.street)
+        solids_.emplace(layout_.street);
     colours_ = std::move(colours);
     balls_.clear();
     orientations_.clear();
@@ -145,15 +144,6 @@ void BallView::placeStreetShot()
     update();
 }
 
-void BallView::userMovedCamera()
-{
-    cameraMoved_ = true;
-    if (shot_) {
-        shot_.reset();
-        emit streetShotChanged();
-    }
-}
-
 void BallView::frameScene()
 {
     frameSceneCamera(camera_, geometry_, layout_, float(width()) / float(std::max(height(), 1)));
@@ -164,13 +154,6 @@ void BallView::setCameraPose(const QVector3D& target, float yawDeg, float pitchD
 {
     camera_.setPose(target, yawDeg, pitchDeg, distance, (geometry_.hi - geometry_.lo).length(), fovYDeg);
     framePending_ = false;
-    userMovedCamera();
-    update();
-}
-
-void BallView::turn(float yawDegrees)
-{
-    camera_.turn(yawDegrees);
     userMovedCamera();
     update();
 }
@@ -296,7 +279,8 @@ void BallView::paintOverlay(QPainter& p)
 {
     QFont font = p.font();
     font.setPointSizeF(10.0 * scale_);
-    paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font);
+    paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font,
+                     [&](const QVector3D& at) { return solids_ && solids_->hides(camera_.eye(), at); });
     if (!ghostLegend_.isEmpty()) // bottom right, in the ghosts' violet: clear of the axis labels at the top
         drawHaloText(p, QPointF(width() - 12, height() - 40 * scale_), ghostLegend_, QColor(0x4b, 0x00, 0x82),
                      Qt::AlignRight);
@@ -346,147 +330,9 @@ bool BallView::ballPixel(int ball, QPointF& pixel) const
     return camera_.project(ballAt(ball), size(), pixel);
 }
 
-int BallView::pick(const QPointF& pixel) const
-{
-    QVector3D origin, dir;
-    camera_.ray(pixel, size(), origin, dir);
-    int best = -1;
-    float bestT = std::numeric_limits<float>::infinity();
-    const int n = int(balls_.size() / 3);
-    for (int i = 0; i < n; ++i) {
-        // Ray-sphere: the nearest t >= 0 with |origin + t dir - c| = r.
-        if (hidden(i))
-            continue;
-        const QVector3D c = ballAt(i);
-        const float r = drawnRadius(c);
-        const QVector3D oc = c - origin;
-        const float b = QVector3D::dotProduct(oc, dir);
-        const float miss2 = oc.lengthSquared() - b * b;
-        if (miss2 > r * r || b < 0.0f)
-            continue;
-        const float t = b - std::sqrt(r * r - miss2);
-        if (t < bestT) {
-            bestT = t;
-            best = i;
-        }
-    }
-    return best;
-}
-
-bool BallView::event(QEvent* e)
-{
-    // With focus the arrow keys move the camera (the report's keys), so they must not
-    // reach the window's shortcuts (Right steps the run elsewhere).
-    if (e->type() == QEvent::ShortcutOverride) {
-        const int key = static_cast<QKeyEvent*>(e)->key();
-        if (key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down ||
-            key == Qt::Key_Escape) {
-            e->accept();
-            return true;
-        }
-    }
-    return QOpenGLWindow::event(e);
-}
-
-void BallView::keyPressEvent(QKeyEvent* e)
-{
-    // Appendix D: left/right move the camera by -/+2 in x, up/down by -/+2 in z (box 100).
-    const float step = geometry_.arrowStep;
-    switch (e->key()) {
-    case Qt::Key_Left:
-        camera_.moveEye({-step, 0, 0});
-        break;
-    case Qt::Key_Right:
-        camera_.moveEye({step, 0, 0});
-        break;
-    case Qt::Key_Up:
-        camera_.moveEye({0, 0, -step});
-        break;
-    case Qt::Key_Down:
-        camera_.moveEye({0, 0, step});
-        break;
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:
-        camera_.zoom(1.0f);
-        break;
-    case Qt::Key_Minus:
-        camera_.zoom(-1.0f);
-        break;
-    case Qt::Key_Escape:
-        emit keysReleased();
-        break;
-    default:
-        QOpenGLWindow::keyPressEvent(e);
-        return;
-    }
-    userMovedCamera();
-    update();
-}
-
-void BallView::focusInEvent(QFocusEvent* e)
-{
-    QOpenGLWindow::focusInEvent(e);
-    keyFocus_ = true;
-    update();
-}
-
-void BallView::focusOutEvent(QFocusEvent* e)
-{
-    QOpenGLWindow::focusOutEvent(e);
-    keyFocus_ = false;
-    update();
-}
-
 void BallView::exposeEvent(QExposeEvent* e)
 {
     QOpenGLWindow::exposeEvent(e);
-    update();
-}
-
-void BallView::mousePressEvent(QMouseEvent* e)
-{
-    pressPos_ = lastPos_ = e->position().toPoint();
-    dragButton_ = e->button();
-    if (dragButton_ == Qt::LeftButton && (e->modifiers() & Qt::ShiftModifier))
-        dragButton_ = Qt::MiddleButton;
-}
-
-void BallView::mouseMoveEvent(QMouseEvent* e)
-{
-    const QPoint pos = e->position().toPoint();
-    const QPoint d = pos - lastPos_;
-    lastPos_ = pos;
-    if (dragButton_ == Qt::LeftButton)
-        camera_.orbit(float(d.x()), float(d.y()));
-    else if (dragButton_ == Qt::RightButton || dragButton_ == Qt::MiddleButton)
-        camera_.pan(float(d.x()), float(d.y()), size());
-    else
-        return;
-    userMovedCamera();
-    update();
-}
-
-void BallView::mouseReleaseEvent(QMouseEvent* e)
-{
-    const bool click = (e->position().toPoint() - pressPos_).manhattanLength() < 5;
-    if (click && e->button() == Qt::LeftButton) {
-        const int ball = pick(e->position());
-        if (ball >= 0)
-            emit ballPicked(ball);
-    }
-    dragButton_ = Qt::NoButton;
-}
-
-void BallView::mouseDoubleClickEvent(QMouseEvent* e)
-{
-    if (pick(e->position()) < 0)
-        resetView();
-}
-
-void BallView::wheelEvent(QWheelEvent* e)
-{
-    camera_.zoom(float(e->angleDelta().y()) / 120.0f);
-    userMovedCamera();
     update();
 }
 

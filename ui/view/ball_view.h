@@ -22,6 +22,7 @@
 #include <QPainter>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -123,12 +124,19 @@ private:
     bool hidden(int i) const;
     // The camera moved by hand: it keeps its place, and leaves the street's shot.
     void userMovedCamera();
+    // A camera move by hand, move(camera, t) scaled by t in [0, 1]: on the street the eye
+    // stops short of the road, the kerbs, the houses and the cars (moveWhileClear).
+    void moveCameraByHand(const std::function<void(OrbitCamera&, float)>& move);
+    // Zooms by `steps` towards what the window pixel `at` shows on the street (the target
+    // elsewhere, and where the pixel shows the sky).
+    void zoomTowards(const QPointF& at, float steps);
     void placeStreetShot();
 
     OrbitCamera camera_;
     SceneRenderer renderer_;
     SceneLayout layout_;
     SceneGeometry geometry_;
+    std::optional<StreetSolids> solids_; // on the street: where the camera may not go
     std::vector<unsigned> colours_;
     QColor background_{0xec, 0xf0, 0xf5};
     std::vector<float> balls_;

@@ -52,6 +52,15 @@ void OrbitCamera::zoom(float wheelSteps)
     distance_ = std::clamp(distance_ * std::pow(0.85f, wheelSteps), size_ * 1e-3f, size_ * 50.0f);
 }
 
+void OrbitCamera::zoomTowards(const QVector3D& point, float wheelSteps)
+{
+    // A scaling about `point` by f = d'/d: the eye e -> p + f (e - p), the target
+    // t -> p + f (t - p), so e - t scales by f and the view's direction is kept.
+    const float before = distance_;
+    zoom(wheelSteps);
+    target_ = point + (distance_ / before) * (target_ - point);
+}
+
 void OrbitCamera::setPose(const QVector3D& target, float yawDeg, float pitchDeg, float distance, float sceneSize,
                           float fovYDeg)
 {

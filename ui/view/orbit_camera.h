@@ -34,6 +34,9 @@ public:
     void turn(float yawDegrees) { yaw_ = std::fmod(yaw_ + yawDegrees, 360.0f); }
     void pan(float dxPixels, float dyPixels, QSize viewport);
     void zoom(float wheelSteps);
+    // Zooms as zoom() does, but towards `point` (the one under the pointer): the eye and the
+    // target both move towards it by the zoom's factor, so it stays where it is in the picture.
+    void zoomTowards(const QVector3D& point, float wheelSteps);
     // Moves the eye by `delta` in world coordinates and keeps looking at the target.
     void moveEye(const QVector3D& delta);
     // Puts the camera at a saved pose (a preset's); pitch is kept within +-89 degrees as
@@ -74,5 +77,39 @@ private:
     float fovY_ = kDefaultFovY;
     float size_ = 1.0f; // the framed box's diagonal, for near/far and step sizes
 };
+
+// Applies `move(camera, t)`, a camera move scaled by t in [0, 1], as far as the eye stays
+// where `clear(eye)` allows (the street: out of the road, the kerbs, the houses and the cars).
+// The move is walked in 16 parts, since one wheel notch can carry the eye through a house
+// front 3 m deep, and the first part that leaves the clear is bisected to 1/16384 of the
+// move. An eye that already stands where it may not moves freely: the way out is not barred.
+template <class Move, class Clear> void moveWhileClear(OrbitCamera& camera, Move move, Clear clear)
+{
+    const OrbitCamera start = camera;
+    const auto movedBy = [&](float t) {
+        OrbitCamera c = start;
+        move(c, t);
+        return c;
+    };
+    if (!clear(start.eye())) {
+        camera = movedBy(1.0f);
+        return;
+    }
+    constexpr int kParts = 16;
+    float lo = 0.0f, hi = 0.0f;
+    for (int k = 1; k <= kParts && hi == 0.0f; ++k) {
+        const float t = float(k) / float(kParts);
+        (clear(movedBy(t).eye()) ? lo : hi) = t;
+    }
+    if (hi == 0.0f) {
+        camera = movedBy(1.0f);
+        return;
+    }
+    for (int i = 0; i < 10; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        (clear(movedBy(mid).eye()) ? lo : hi) = mid;
+    }
+    camera = movedBy(lo);
+}
 
 } // namespace ab::ui

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "street_camera.h"
 
+#include "street_geometry.h"
+
 #include "core/street/street_census.h"
 
 #include <QtMath>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ab::ui {
 
@@ -23,6 +26,66 @@ CameraPose lookFrom(const QVector3D& eye, const QVector3D& target)
 }
 
 } // namespace
+
+StreetSolids::StreetSolids(std::shared_ptr<const street::Layout> street)
+    : street_(std::move(street)), boxes_(streetSolids(*street_))
+{
+}
+
+bool StreetSolids::clear(const QVector3D& eye) const
+{
+    const Eigen::Vector3d p(eye.x(), eye.y(), eye.z());
+    if (p.y() < street_->roadY(p.x()) + kStreetEyeClearance)
+        return false;
+    // Box::outside is the vector from the box's nearest point: its norm, the distance.
+    return std::none_of(boxes_.begin(), boxes_.end(), [&](const street::Box& b) {
+        return b.outside(b.toLocal(p)).squaredNorm() < double(kStreetEyeClearance * kStreetEyeClearance);
+    });
+}
+
+std::optional<QVector3D> StreetSolids::hit(const QVector3D& origin, const QVector3D& direction) const
+{
+    const Eigen::Vector3d o(origin.x(), origin.y(), origin.z()), d(direction.x(), direction.y(), direction.z());
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const street::Box& b : boxes_) {
+        // The slab test in the box's frame: o + t d is inside on axis i for t between
+        // (-h_i - o_i) / d_i and (h_i - o_i) / d_i; inside the box for t in [tIn, tOut].
+        const Eigen::Vector3d lo = b.toLocal(o), ld = b.rotateIn(d);
+        double tIn = 0.0, tOut = nearest;
+        for (int i = 0; i < 3 && tIn <= tOut; ++i) {
+            if (std::abs(ld[i]) < 1e-12) {
+                if (std::abs(lo[i]) > b.half[i])
+                    tOut = -1.0; // parallel to this slab and outside it
+                continue;
+            }
+            const double t1 = (-b.half[i] - lo[i]) / ld[i], t2 = (b.half[i] - lo[i]) / ld[i];
+            tIn = std::max(tIn, std::min(t1, t2));
+            tOut = std::min(tOut, std::max(t1, t2));
+        }
+        if (tIn <= tOut && tIn > 0.0)
+            nearest = tIn;
+    }
+    // The flat street past the foot, y = 0: o_y + t d_y = 0.
+    if (d.y() < 0.0) {
+        const double t = -o.y() / d.y();
+        const Eigen::Vector3d p = o + t * d;
+        if (t > 0.0 && t < nearest && p.x() >= street_->xFoot &&
+            std::abs(p.z()) <= 0.5 * street_->width + street_->sidewalk)
+            nearest = t;
+    }
+    if (!std::isfinite(nearest))
+        return std::nullopt;
+    return origin + float(nearest) * direction;
+}
+
+bool StreetSolids::hides(const QVector3D& eye, const QVector3D& point) const
+{
+    const float reach = (point - eye).length();
+    if (reach <= 0.5f)
+        return false;
+    const auto first = hit(eye, (point - eye) / reach);
+    return first && (*first - eye).length() < reach - 0.5f;
+}
 
 bool ballHidden(const street::Layout& street, float x)
 {

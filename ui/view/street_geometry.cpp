@@ -109,26 +109,46 @@ void addMarkings(SceneGeometry& g, const street::Layout& s)
 }
 
 // One house of the terrace on side `side` (-1 or +1) from x0 to x1: its front on the
-// sidewalk's outer edge, its ground below the road, its roof `storeys` above the road's
-// higher end, and two rows of windows on the front.
-void addHouse(std::vector<FlatVertex>& out, const street::Layout& s, double x0, double x1, int index, double side)
+// sidewalk's outer edge, its ground below the road, its roof 7, 9 or 11 m (by `index`) above
+// the road's higher end and the kerb.
+Box houseBox(const street::Layout& s, double x0, double x1, int index, double side)
 {
     const double front = 0.5 * s.width + s.sidewalk;
     const double low = std::min(s.roadY(x0), s.roadY(x1)), high = std::max(s.roadY(x0), s.roadY(x1));
     const double roof = high + s.kerb + 7.0 + 2.0 * (index % 3);
     const double z0 = side > 0 ? front : -front - 3.0, z1 = side > 0 ? front + 3.0 : -front;
-    box(out,
-        axisBox(ItemKind::House, QVector3D(float(x0), float(low - 3.0), float(z0)),
-                QVector3D(float(x1), float(roof), float(z1))),
-        QColor::fromRgb(housePaint[std::size_t(index) % housePaint.size()]));
-    const auto zf = float(side > 0 ? z0 - 0.04 : z1 + 0.04); // on the front, towards the street
+    return axisBox(ItemKind::House, QVector3D(float(x0), float(low - 3.0), float(z0)),
+                   QVector3D(float(x1), float(roof), float(z1)));
+}
+
+// Houses 8 m wide, the first starting behind the back wall, to the foot: house(x0, x1,
+// index, side) for each, the far side (-z) first.
+template <class House> void forEachHouse(const street::Layout& s, House house)
+{
+    const double start = s.xTop - 3.0, width = 8.0;
+    int index = 0;
+    for (double x = start; x < s.xFoot - 0.5; x += width, ++index) {
+        const double x1 = std::min(x + width, s.xFoot);
+        house(x, x1, index, -1.0);
+        house(x, x1, index + 3, 1.0);
+    }
+}
+
+// A house of the terrace (houseBox) with two rows of windows on its front.
+void addHouse(std::vector<FlatVertex>& out, const street::Layout& s, double x0, double x1, int index, double side)
+{
+    const Box b = houseBox(s, x0, x1, index, side);
+    box(out, b, QColor::fromRgb(housePaint[std::size_t(index) % housePaint.size()]));
+    const double high = std::max(s.roadY(x0), s.roadY(x1)), roof = b.centre.y() + b.half.y();
+    const double zFront = side > 0 ? b.centre.z() - b.half.z() : b.centre.z() + b.half.z();
+    const auto zf = float(zFront - 0.04 * side); // on the front, towards the street
     for (int row = 0; row < 2; ++row) {
         const double y0 = high + s.kerb + 2.2 + 2.6 * row, y1 = y0 + 1.4;
         if (y1 > roof - 0.5)
             break;
         for (double f : {0.22, 0.62}) {
-            const double a = x0 + f * (x1 - x0), b = a + 0.22 * (x1 - x0);
-            const QVector3D p0(float(a), float(y0), zf), p1(float(b), float(y0), zf), p2(float(b), float(y1), zf),
+            const double a = x0 + f * (x1 - x0), c = a + 0.22 * (x1 - x0);
+            const QVector3D p0(float(a), float(y0), zf), p1(float(c), float(y0), zf), p2(float(c), float(y1), zf),
                 p3(float(a), float(y1), zf);
             if (side > 0)
                 quad(out, p0, p3, p2, p1, windowBlue); // faces -z, the street
@@ -140,14 +160,9 @@ void addHouse(std::vector<FlatVertex>& out, const street::Layout& s, double x0, 
 
 void addHouses(SceneGeometry& g, const street::Layout& s)
 {
-    // Houses 8 m wide, the first starting behind the back wall, to the foot.
-    const double start = s.xTop - 3.0, width = 8.0;
-    int index = 0;
-    for (double x = start; x < s.xFoot - 0.5; x += width, ++index) {
-        const double x1 = std::min(x + width, s.xFoot);
-        addHouse(g.floor, s, x, x1, index, -1.0);
-        addHouse(g.cutaway, s, x, x1, index + 3, 1.0);
-    }
+    forEachHouse(s, [&](double x0, double x1, int index, double side) {
+        addHouse(side > 0 ? g.cutaway : g.floor, s, x0, x1, index, side);
+    });
 }
 
 // The flat street beyond the open foot, 60 m of it, where the balls that left the run
@@ -223,6 +238,17 @@ QColor itemColour(const Box& b, std::size_t index)
 }
 
 } // namespace
+
+std::vector<Box> streetSolids(const street::Layout& s)
+{
+    std::vector<Box> solids;
+    for (const Box& b : s.boxes)
+        if (b.kind != ItemKind::House)
+            solids.push_back(b);
+    forEachHouse(
+        s, [&](double x0, double x1, int index, double side) { solids.push_back(houseBox(s, x0, x1, index, side)); });
+    return solids;
+}
 
 void addStreetGeometry(SceneGeometry& g, const street::Layout& s, const QString& lengthUnit)
 {

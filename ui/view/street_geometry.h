@@ -15,4 +15,8 @@ namespace ab::ui {
 // region) for `street`, labels in `lengthUnit`.
 void addStreetGeometry(SceneGeometry& g, const street::Layout& street, const QString& lengthUnit);
 
+// The street's solid parts as the view draws them: the layout's boxes, its tall house fronts
+// replaced by the terrace of houses drawn in their place (the camera keeps out of these).
+std::vector<street::Box> streetSolids(const street::Layout& street);
+
 } // namespace ab::ui

@@ -145,7 +145,8 @@ void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& 
 }
 
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
-                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font)
+                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font,
+                      const std::function<bool(const QVector3D&)>& hidden)
 {
     p.setRenderHint(QPainter::Antialiasing);
     p.setFont(font);
@@ -155,7 +156,7 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
         // A label whose point is out of view is not drawn: moved in, it would name the wrong place
         // (the top's label in a corner of the flood shot, the top far above the picture).
         if (!camera.project(label.at, size, at) || at.x() < 0.0 || at.x() > size.width() || at.y() < 0.0 ||
-            at.y() > size.height())
+            at.y() > size.height() || (hidden && hidden(label.at)))
             continue;
         // A label whose point is in view is read whole: moved in from the edge it would cross
         // (drawn centred on its point, across and up and down).

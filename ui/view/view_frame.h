@@ -14,6 +14,7 @@
 #include <QFont>
 #include <QPainter>
 
+#include <functional>
 #include <vector>
 
 namespace ab::ui {
@@ -49,7 +50,9 @@ void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QCo
 void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour);
 
 // The geometry's labels and, in the vertical scene, the ball's height beside it, in `font`.
+// A label whose point `hidden` says is behind something solid is not drawn.
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
-                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font);
+                      const SceneLayout& layout, const std::vector<float>& balls, const QFont& font,
+                      const std::function<bool(const QVector3D&)>& hidden = {});
 
 } // namespace ab::ui
