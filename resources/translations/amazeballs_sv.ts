@@ -1820,10 +1820,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>- bilder/s</translation>
     </message>
     <message>
-        <source>%1 fps</source>
-        <translation>%1 bilder/s</translation>
-    </message>
-    <message>
         <source>Paused: %1</source>
         <translation>Pausad: %1</translation>
     </message>
@@ -1922,6 +1918,13 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>All have left at the foot</source>
         <translation>Alla har lämnat vid foten</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n fps</source>
+        <translation>
+            <numerusform>%n bild/s</numerusform>
+            <numerusform>%n bilder/s</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
 #include "ui/panels/stage_navigator.h"
+#include "ui/panels/status_readout.h"
 #include "ui/shell/window_shell.h"
 
 #include <QAbstractAxis>
@@ -25,6 +26,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
+#include <QStatusBar>
 #include <QXmlStreamReader>
 #include <QtTest>
 
@@ -219,8 +221,19 @@ private slots:
             } else if (xml.name() == QLatin1String("translation")) {
                 ++messages;
                 const QString type = xml.attributes().value("type").toString();
-                const QString text = xml.readElementText();
-                if (!type.isEmpty() || text.isEmpty())
+                // Its text, or a plural's forms (numerusform), each of which must be filled in.
+                QString text;
+                bool emptyForm = false;
+                while (xml.readNext() != QXmlStreamReader::EndElement && !xml.hasError()) {
+                    if (xml.isCharacters())
+                        text += xml.text().trimmed();
+                    else if (xml.isStartElement()) {
+                        const QString form = xml.readElementText();
+                        emptyForm = emptyForm || form.isEmpty();
+                        text += form;
+                    }
+                }
+                if (!type.isEmpty() || text.isEmpty() || emptyForm)
                     bad << QStringLiteral("%1 [%2]").arg(source, type.isEmpty() ? QStringLiteral("empty") : type);
             }
         }
@@ -306,6 +319,26 @@ private slots:
         QCOMPARE(QKeySequence(Qt::Key_Right).toString(QKeySequence::NativeText), QString::fromUtf8("Höger"));
         ab::ui::installLanguage(Language::English);
         QCOMPARE(QKeySequence(Qt::Key_Space).toString(QKeySequence::NativeText), QString("Space"));
+    }
+
+    void frameRateSaysOneBildAndTwoBilder()
+    {
+        // The status bar's frame rate in Swedish: "1 bild/s", "30 bilder/s" (it read "1 bilder/s").
+        const auto shown = [](Language language, double fps) {
+            ab::ui::installLanguage(language);
+            QStatusBar bar;
+            ab::ui::StatusReadout readout(&bar);
+            readout.setFrameRate(fps);
+            QStringList texts;
+            for (const QLabel* label : bar.findChildren<QLabel*>())
+                if (label->text().contains(QLatin1String("/s")) || label->text().contains(QLatin1String("fps")))
+                    texts << label->text();
+            return texts.join(QLatin1Char('|'));
+        };
+        QCOMPARE(shown(Language::Swedish, 1.2), QStringLiteral("1 bild/s"));
+        QCOMPARE(shown(Language::Swedish, 30.4), QStringLiteral("30 bilder/s"));
+        QCOMPARE(shown(Language::English, 1.2), QStringLiteral("1 fps"));
+        QCOMPARE(shown(Language::English, 30.4), QStringLiteral("30 fps"));
     }
 
     void localeChoosesTheLanguage()

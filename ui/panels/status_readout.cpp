@@ -337,7 +337,10 @@ void StatusReadout::placeDetails()
 
 void StatusReadout::setFrameRate(double fps)
 {
-    fps_->setText(fps < 0.0 ? tr("no 3D view") : fps == 0.0 ? tr("- fps") : tr("%1 fps").arg(fps, 0, 'f', 0));
+    // %n: Swedish has "1 bild/s" and "2 bilder/s".
+    fps_->setText(fps < 0.0    ? tr("no 3D view")
+                  : fps == 0.0 ? tr("- fps")
+                               : tr("%n fps", nullptr, static_cast<int>(std::lround(fps))));
     fitText(fps_);
 }
 
