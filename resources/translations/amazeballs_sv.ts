@@ -279,10 +279,6 @@
         <translation>vid stegets slut</translation>
     </message>
     <message>
-        <source>located in the step</source>
-        <translation>lokaliserade inom steget</translation>
-    </message>
-    <message>
         <source>, dt = %1 %2</source>
         <translation>, dt = %1 %2</translation>
     </message>
@@ -313,6 +309,10 @@
     <message>
         <source>the default constants</source>
         <translation>standardkonstanterna</translation>
+    </message>
+    <message>
+        <source>located inside the step</source>
+        <translation>lokaliserade inom steget</translation>
     </message>
 </context>
 <context>

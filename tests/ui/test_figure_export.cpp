@@ -259,6 +259,7 @@ private slots:
         const QByteArray caption = readAll(svg), data = readAll(csv);
         QVERIFY(caption.simplified().contains("n = 40") && caption.contains("(default: 10000)")); // wrapped between
         QVERIFY(caption.contains("dt = 1/60 s"));
+        QVERIFY(caption.contains("impacts located inside the step")); // the window's Impacts words
         QVERIFY(!caption.contains("report:"));
         QVERIFY(data.contains("# constant n = 40 (the default: 10000)\n"));
         QVERIFY(data.contains("# constant slope = 17 deg (the default value)\n"));

@@ -307,6 +307,11 @@ private slots:
             QVERIFY2(error->text().contains(expected[i]), qPrintable(error->text()));
             QVERIFY2(!error->text().contains(QLatin1String(" is ")), qPrintable(error->text()));
         }
+        // The range stays whole on one line in a narrow column: "[0, 1]" with a no-break space.
+        k->setText(QStringLiteral("5"));
+        emit k->editingFinished();
+        QVERIFY2(error->text().endsWith(QStringLiteral("[0,") + QChar(0x00A0) + QStringLiteral("1]")),
+                 qPrintable(error->text()));
         QCOMPARE(w.controller().spec().params.real("k"), before); // nothing applied
     }
 

@@ -202,6 +202,14 @@ private slots:
         QCOMPARE(restore->text(), QString("Default values"));
         const QString tip = panel.field("slope")->toolTip();
         QVERIFY2(tip.contains("Default: 17") && !tip.contains("Report"), qPrintable(tip));
+        // The key follows the symbol only where they differ ("r (r)" said it twice).
+        QVERIFY2(panel.field("r")->toolTip().startsWith("<b>r</b>: "), qPrintable(panel.field("r")->toolTip()));
+        QVERIFY2(panel.field("n")->toolTip().startsWith("<b>N</b> (n): "), qPrintable(panel.field("n")->toolTip()));
+        // A refusal's range and unit stay on one line: "(0, 60] deg" broke before "deg".
+        panel.refuse("slope", "slope: 70 is outside the allowed range (0, 60] deg");
+        const QString refused = panel.findChild<QLabel*>("paramError-slope")->text();
+        const QChar nbsp(0x00A0);
+        QVERIFY2(refused.endsWith(QString("(0,") + nbsp + "60]" + nbsp + "deg"), qPrintable(refused));
         // Stage 2 is the report's: its g, and its button, are the report's; its friction is not.
         const SceneInfo& box = sceneInfo(SceneId::Box3d);
         panel.setScene(box, ModelKind::Physical, box.defaults());

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -30,6 +31,17 @@ QString prettyUnit(const std::string& unit)
     u.replace("^2", QString::fromUtf8("\u00b2"));
     u.replace("^3", QString::fromUtf8("\u00b3"));
     return u == "1" ? QString() : u;
+}
+
+// A refusal's closing range and unit, "(0, 60] deg", kept on one line: a narrow column
+// broke it before the unit or inside the interval.
+QString keepRangeWhole(QString text)
+{
+    static const QRegularExpression range(QStringLiteral("[\\[(][^\\[\\]()]*[\\])](?: \\S+)?$"));
+    const QRegularExpressionMatch m = range.match(text);
+    if (m.hasMatch())
+        text.replace(m.capturedStart(), m.capturedLength(), m.captured().replace(QLatin1Char(' '), QChar(0x00A0)));
+    return text;
 }
 
 QLabel* newErrorLabel(const QString& name)
@@ -78,12 +90,15 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
 QString ParameterPanel::tooltip(const ParamSpec& spec)
 {
     const QString unit = prettyUnit(spec.unit);
-    return QStringLiteral("<b>%1</b> (%2): %3<br>%4 %5<br>%6 %7 %8<br>%9 %10")
-        .arg(qs(spec.symbol).toHtmlEscaped(), qs(spec.key).toHtmlEscaped(), coreText(spec.meaning).toHtmlEscaped(),
-             spec.reportDefault() ? tr("Report:") : tr("Source:"), coreText(spec.equation).toHtmlEscaped(),
-             tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(), unit.toHtmlEscaped(),
-             spec.reportDefault() ? tr("Report value:") : tr("Default:"))
-        .arg(qs(formatValue(spec, spec.defaultValue)).toHtmlEscaped());
+    // "<b>v0</b> (v0)" said the name twice: the key follows the symbol only where they differ.
+    QString name = QStringLiteral("<b>%1</b>").arg(qs(spec.symbol).toHtmlEscaped());
+    if (spec.symbol != spec.key)
+        name += QStringLiteral(" (%1)").arg(qs(spec.key).toHtmlEscaped());
+    return QStringLiteral("%1: %2<br>%3 %4<br>%5 %6 %7<br>%8 %9")
+        .arg(name, coreText(spec.meaning).toHtmlEscaped(), spec.reportDefault() ? tr("Report:") : tr("Source:"),
+             coreText(spec.equation).toHtmlEscaped(), tr("Range:"), qs(formatRange(spec)).toHtmlEscaped(),
+             unit.toHtmlEscaped(), spec.reportDefault() ? tr("Report value:") : tr("Default:"),
+             qs(formatValue(spec, spec.defaultValue)).toHtmlEscaped());
 }
 
 void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const ParamValues& values)
@@ -168,11 +183,11 @@ void ParameterPanel::showRefusals()
         const bool refused = refusal != refused_.end();
         setInvalid(field, refused);
         QLabel* note = notes_.at(key);
-        note->setText(refused ? tr("Not applied: %1").arg(refusal->second) : QString());
+        note->setText(refused ? tr("Not applied: %1").arg(keepRangeWhole(refusal->second)) : QString());
         note->setVisible(refused);
     }
     const auto whole = refused_.find(std::string()); // the panel's, not one field's
-    error_->setText(whole != refused_.end() ? tr("Not applied: %1").arg(whole->second) : QString());
+    error_->setText(whole != refused_.end() ? tr("Not applied: %1").arg(keepRangeWhole(whole->second)) : QString());
     error_->setVisible(whole != refused_.end());
 }
 
