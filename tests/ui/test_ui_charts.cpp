@@ -14,6 +14,7 @@
 #include <QChartView>
 #include <QGraphicsTextItem>
 #include <QLineSeries>
+#include <QTabBar>
 #include <QValueAxis>
 #include <QtTest>
 
@@ -187,6 +188,49 @@ private slots:
         panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
         QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
         QVERIFY(!panel.chartShown(ChartKind::Activity));
+    }
+
+    void stackedChartsPutOneTimeAtOneX()
+    {
+        using ab::SceneId;
+        using ab::ui::ChartKind;
+        // The street's charts in one column: the energy's labels ("2000000") are far wider
+        // than the speeds' ("40"), which put the speeds' plot, and its cursor, 40 px further
+        // left. Each plot now starts and ends where the others do: a time is at one x.
+        ab::ui::ChartPanel panel;
+        panel.resize(600, 4000); // every chart on one page
+        ab::ui::ChartUnits units;
+        units.streetBlocks = 3;
+        panel.configure(ab::sceneInfo(SceneId::Street), 10, 0, 30.0, units);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        panel.chart(ChartKind::Energy)->valueAxis()->setRange(0.0, 2e6);
+        panel.chart(ChartKind::Speeds)->valueAxis()->setRange(0.0, 40.0);
+        const std::vector<ChartKind> column = panel.shownCharts();
+        QVERIFY(column.size() >= 5); // position, velocity, energy, foot rate, speeds
+        // Where t = 17.7 s is drawn in each chart's view.
+        auto xAt = [&](ChartKind kind) {
+            ab::ui::MotionChart* c = panel.chart(kind);
+            return c->mapToPosition(QPointF(17.7, 0.0), c->line(0)).x() + c->pos().x();
+        };
+        auto spread = [&](auto edge) {
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (ChartKind kind : column) {
+                lo = std::min(lo, edge(kind));
+                hi = std::max(hi, edge(kind));
+            }
+            return hi - lo;
+        };
+        QTRY_VERIFY2(spread(xAt) < 1.0, qPrintable(QString::number(spread(xAt))));
+        QVERIFY(spread([&](ChartKind k) { return panel.chart(k)->plotArea().right(); }) < 1.0);
+        // The charts' own plots would start apart: the energy's labels are the wider.
+        const double unaligned =
+            spread([&](ChartKind k) { return panel.chart(k)->plotArea().left() - panel.chart(k)->plotInsetLeft(); });
+        QVERIFY2(unaligned > 20.0, qPrintable(QString::number(unaligned)));
+        // A chart alone on its page has no inset.
+        panel.resize(600, 330); // one chart a page
+        QTRY_VERIFY(panel.pages()->count() > 2);
+        QTRY_COMPARE(panel.chart(panel.currentChart())->plotInsetLeft(), 0);
     }
 
     void energyChartDrawsKineticPotentialAndTotal()

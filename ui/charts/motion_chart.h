@@ -103,6 +103,11 @@ public:
     bool hasComparison() const { return !compareName_.isEmpty(); }
     // A caption under the legend (how the figure was made); empty: none.
     void setCaption(const QString& caption);
+    // Room added left and right of the plot (pixels), so that charts stacked in a column
+    // have their plot areas at one x (alignPlotAreas); 0 for a chart alone.
+    void setPlotInset(int left, int right);
+    int plotInsetLeft() const { return insetLeft_; }
+    int plotInsetRight() const { return insetRight_; }
     // The legend as drawn: one entry per line of the run, then one per family of lines
     // (the run, the closed form, the comparison) when there are several, each with the pen
     // it stands for.
@@ -184,7 +189,14 @@ private:
     std::vector<double> rate_; // impacts per unit of time, from the last track shown
     std::vector<double> diffT_;
     std::array<std::vector<double>, 3> diffRun_;
+    int insetLeft_ = 0, insetRight_ = 0;
 };
+
+// Lines up the plot areas of charts stacked in one column and as wide: each chart's plot
+// starts where the widest value axis' labels leave the plot of the chart that has them, and
+// ends where the narrowest plot ends, so one time is at one x down the column and the
+// charts' cursors make one line. A lone chart has no inset.
+void alignPlotAreas(const std::vector<MotionChart*>& charts);
 
 // The height `chart` needs at `width` pixels to read whole: its title, the legend's rows,
 // the time axis's labels and title, and a plot at least as tall as the value axis's title

@@ -79,8 +79,38 @@ void MotionChart::placeLegend()
     const double h = legend_->layout(width);
     const double gap = look_.figure ? look_.px(3.0) : 3.0;
     const int edge = look_.figure ? int(look_.px(3.0)) : 4;
-    setMargins(QMargins(edge, edge, edge + (look_.figure ? 0 : 4), int(std::ceil(h + 2.0 * gap))));
+    setMargins(QMargins(edge + insetLeft_, edge, edge + (look_.figure ? 0 : 4) + insetRight_,
+                        int(std::ceil(h + 2.0 * gap))));
     legend_->setPos(side, size().height() - h - gap);
+}
+
+void MotionChart::setPlotInset(int left, int right)
+{
+    if (left == insetLeft_ && right == insetRight_)
+        return;
+    insetLeft_ = left;
+    insetRight_ = right;
+    placeLegend();
+}
+
+void alignPlotAreas(const std::vector<MotionChart*>& charts)
+{
+    // The plot's edges without the inset: the left edge moves right by the inset's left,
+    // the right edge left by its right.
+    std::vector<double> left, right;
+    for (const MotionChart* c : charts) {
+        left.push_back(c->plotArea().left() - c->plotInsetLeft());
+        right.push_back(c->plotArea().right() + c->plotInsetRight());
+    }
+    if (charts.size() < 2) {
+        for (MotionChart* c : charts)
+            c->setPlotInset(0, 0);
+        return;
+    }
+    const double l = *std::max_element(left.begin(), left.end());
+    const double r = *std::min_element(right.begin(), right.end());
+    for (std::size_t i = 0; i < charts.size(); ++i)
+        charts[i]->setPlotInset(int(std::lround(l - left[i])), int(std::lround(right[i] - r)));
 }
 
 void MotionChart::updateLegend()

@@ -15,6 +15,7 @@
 #include <QSplitter>
 #include <QStringList>
 #include <QTabBar>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QValueAxis>
 
@@ -81,6 +82,9 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
         auto* box = new QVBoxLayout(holder);
         box->setContentsMargins(0, 0, 0, 0);
         box->addWidget(view);
+        // A chart's plot moved (its value labels grew, a page or a size changed): the column's
+        // plots are lined up again once the layout has settled.
+        connect(chart, &QChart::plotAreaChanged, this, &ChartPanel::scheduleAlignment);
         charts_[slot(kind)] = chart;
         views_[slot(kind)] = view;
         holders_[slot(kind)] = holder;
@@ -106,6 +110,21 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent)
     connect(ball_, &QSpinBox::valueChanged, this, [this](int v) {
         if (!updating_)
             emit ballRequested(v - 1);
+    });
+}
+
+void ChartPanel::scheduleAlignment()
+{
+    if (alignmentPending_)
+        return;
+    alignmentPending_ = true;
+    QTimer::singleShot(0, this, [this] {
+        alignmentPending_ = false;
+        std::vector<MotionChart*> column;
+        for (std::size_t s = 0; s < kinds; ++s)
+            if (holders_[s]->isVisible())
+                column.push_back(charts_[s]);
+        alignPlotAreas(column);
     });
 }
 

@@ -98,6 +98,9 @@ private:
     // comparison or a closed form), and the views shown as the wishes and that say.
     bool available(std::size_t slot) const;
     void applyVisibility();
+    // Lines up the plot areas of the charts shown (alignPlotAreas), after the layout settles.
+    void scheduleAlignment();
+    bool alignmentPending_ = false;
     std::array<bool, kinds> available_{};
     bool comparing_ = false;
     bool closedForm_ = false;
