@@ -14,6 +14,8 @@
 
 #include <QAbstractAxis>
 #include <QApplication>
+#include <QChart>
+#include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
 #include <QLineSeries>
@@ -231,6 +233,45 @@ private slots:
                 }
                 CHECK_CONTRAST("cursor", chart.cursorLine()->pen().color(), c.plotArea, 3.0);
             }
+    }
+
+    void aDenseSolidLineIsDrawnInItsPensColour()
+    {
+        // The contrast above is the pen's; the pixels must carry it. A track thinned to its
+        // least and greatest per pixel column is a zigzag of segments shorter than a pixel,
+        // which Qt Charts draws one by one: with flat ends they blended to 0.7 of the pen's
+        // colour (the total energy's violet #8e44ad drawn as #b17ec7 on white).
+        const QPen pen =
+            ab::ui::linePen(ab::ui::ChartKind::Energy, 2, 0, ab::ui::LineFamily::Run, ab::ui::ChartLook::window());
+        QChart chart;
+        chart.legend()->hide();
+        chart.setBackgroundBrush(Qt::white);
+        chart.setPlotAreaBackgroundVisible(false);
+        auto* series = new QLineSeries;
+        for (int i = 0; i < 2000; ++i) // 4 points a pixel column, 0.3 px apart up and down
+            series->append(i / 4.0, 10.0 + ((i % 4 == 1 || i % 4 == 2) ? 0.01 : -0.01));
+        series->setPen(pen);
+        chart.addSeries(series);
+        chart.createDefaultAxes();
+        for (QAbstractAxis* axis : chart.axes())
+            axis->hide();
+        chart.axes(Qt::Vertical).front()->setRange(0.0, 20.0);
+        chart.resize(600, 300);
+        QImage image(600, 300, QImage::Format_ARGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::Antialiasing);
+        QGraphicsScene scene;
+        scene.addItem(&chart);
+        scene.render(&painter, QRectF(0, 0, 600, 300), QRectF(0, 0, 600, 300));
+        painter.end();
+        scene.removeItem(&chart);
+        // The pixels of the line's core: as many as the line is long, in the pen's colour.
+        int exact = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                exact += image.pixelColor(x, y).rgb() == pen.color().rgb() ? 1 : 0;
+        QVERIFY2(exact > 300, qPrintable(QString("%1 pixels in %2").arg(exact).arg(pen.color().name())));
     }
 
     void comparisonLinesStandApartFromTheirRunOnDarkPlots()

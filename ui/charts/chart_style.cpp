@@ -133,7 +133,12 @@ QPen linePen(ChartKind kind, int line, int order, LineFamily family, const Chart
         break;
     }
     QPen pen(lineColour(kind, line, family), width, style);
-    pen.setCapStyle(Qt::FlatCap);
+    // Qt Charts draws a solid line segment by segment, each antialiased on its own: with flat
+    // ends, a column holding a few segments shorter than a pixel (the track is thinned to its
+    // least and greatest per column) came out at about 0.7 of the pen's colour, as each
+    // segment covers only its share of the pixel and the shares blend rather than add. Round
+    // ends overlap their neighbours. A dashed line is drawn as one path: flat dashes.
+    pen.setCapStyle(style == Qt::SolidLine ? Qt::RoundCap : Qt::FlatCap);
     return pen;
 }
 
