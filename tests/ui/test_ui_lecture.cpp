@@ -20,9 +20,12 @@
 #include <QLineSeries>
 #include <QMenu>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextDocument>
+#include <QTextLayout>
 #include <QValueAxis>
 #include <QtTest>
 
@@ -99,6 +102,48 @@ ab::ui::MotionChart* positionChart(MainWindow& w)
 class UiLecture : public QObject {
     Q_OBJECT
 private slots:
+    void aFormulaBreaksOnlyBetweenItsParts()
+    {
+        // The navigator at lecture size in a narrow column: a formula's line may end after a
+        // comma that closes one relation, before "=", "+", "-" or "/", or between words of prose
+        // beside it, never inside a product ("mu" | "g cos(theta)" before) or a name.
+        QTextDocument doc;
+        QFont big = QApplication::font();
+        big.setPointSizeF(big.pointSizeF() * ab::ui::LectureMode::scale);
+        doc.setDefaultFont(big);
+        const QRegularExpression prose(QStringLiteral("^[A-Za-z']{4,}$")); // words beside a formula
+        int breaks = 0;
+        for (const ab::SceneInfo* scene : ab::allScenes()) {
+            doc.setHtml(ab::ui::StageNavigator::describe(*scene));
+            doc.setTextWidth(380.0);              // the navigator's column in lecture mode at 1280x720
+            doc.documentLayout()->documentSize(); // laid out
+            for (QTextBlock b = doc.begin(); b.isValid(); b = b.next()) {
+                const QString shown = b.text(),
+                              text = QString(shown).replace(QChar(0x00A0), QLatin1Char(' ')).remove(QChar(0x2060));
+                const bool formula =
+                    std::any_of(scene->equations.begin(), scene->equations.end(),
+                                [&](const ab::Equation& e) { return QString::fromStdString(e.text) == text; });
+                if (!formula)
+                    continue;
+                for (int i = 1; i < b.layout()->lineCount(); ++i) {
+                    const int at = b.layout()->lineAt(i).textStart(); // in the text as shown
+                    const auto plain = [](QString t) {
+                        return t.replace(QChar(0x00A0), QLatin1Char(' ')).remove(QChar(0x2060)).trimmed();
+                    };
+                    const QString before = plain(shown.left(at)), after = plain(shown.mid(at));
+                    const bool clean = before.endsWith(',') || after.startsWith("= ") || after.startsWith("+ ") ||
+                                       after.startsWith("- ") || after.startsWith("/ ") || after.startsWith("<") ||
+                                       (prose.match(before.section(' ', -1)).hasMatch() &&
+                                        prose.match(after.section(' ', 0, 0)).hasMatch());
+                    QVERIFY2(clean, qPrintable(QString("%1 | %2").arg(before, after)));
+                    QVERIFY2(!shown.at(at).isSpace(), qPrintable(after)); // no line starts indented
+                    ++breaks;
+                }
+            }
+        }
+        QVERIFY2(breaks >= 3, qPrintable(QString::number(breaks))); // long formulas did break
+    }
+
     void walkRevealsEquationsOneAtATimeThenOpensTheNextStage()
     {
         MainWindow w;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "spin_equations.h"
 
+#include "equation_rows.h"
+
 #include "core/diagnostics/conservation.h"
 #include "core/physical/physical_simulation.h"
 #include "core/physical/rolling.h"
@@ -22,14 +24,6 @@ bool manyBalls(SceneId scene)
 QString num(double x)
 {
     return QString::number(x, 'g', 4);
-}
-
-// One equation as the navigator sets the stage's own: its number, the formula, and what
-// it means (here with the run's numbers) on the line below.
-QString row(const QString& number, const QString& formula, const QString& meaning)
-{
-    return QStringLiteral("<tr><td>(%1)</td><td><tt>%2</tt></td></tr><tr><td></td><td><i>%3</i></td></tr>")
-        .arg(number, formula.toHtmlEscaped(), meaning.toHtmlEscaped());
 }
 
 struct Units {
@@ -57,18 +51,19 @@ QString SpinEquations::html(const Simulation& sim)
     if (spec.scene == SceneId::Bounce1d) {
         // The ball moves on the vertical: its contact point never slides, and the floor's
         // normal force has no lever on a spin about the vertical.
-        out += row(QStringLiteral("S13"), QStringLiteral("\u03c9 = w0"),
-                   tr("the ball spins about the vertical at %1 rad/%2 for the whole run: the floor cannot change "
-                      "that spin")
-                       .arg(num(spec.params.real("w0")), unitsOf(spec).time));
+        out +=
+            equationRow(QStringLiteral("S13"), QStringLiteral("\u03c9 = w0"),
+                        tr("the ball spins about the vertical at %1 rad/%2 for the whole run: the floor cannot change "
+                           "that spin")
+                            .arg(num(spec.params.real("w0")), unitsOf(spec).time));
         return out + QStringLiteral("</table>");
     }
-    out += row(QStringLiteral("S1"), QStringLiteral("u = v_t \u2212 r \u03c9 \u00d7 n"),
-               tr("the slip of the contact point along a wall of inward normal n; u = 0: the ball rolls"));
+    out += equationRow(QStringLiteral("S1"), QStringLiteral("u = v_t \u2212 r \u03c9 \u00d7 n"),
+                       tr("the slip of the contact point along a wall of inward normal n; u = 0: the ball rolls"));
     if (!roughContacts(spec.params)) {
-        out += row(QStringLiteral("S9"), QStringLiteral("P_t = 0"),
-                   tr("smooth contacts (\u03bc = 0 or \u03b2 = −1): no impulse along a wall, so every spin "
-                      "stays as it started"));
+        out += equationRow(QStringLiteral("S9"), QStringLiteral("P_t = 0"),
+                           tr("smooth contacts (\u03bc = 0 or \u03b2 = −1): no impulse along a wall, so every spin "
+                              "stays as it started"));
         return out + QStringLiteral("</table>");
     }
     out += floorRows(sim);
@@ -98,19 +93,19 @@ QString SpinEquations::inertiaRow(const RunSpec& spec)
     const double q = v.real("inertia"), r = v.real("r");
     const QString formula = QStringLiteral("I = q m r\u00b2");
     if (spec.scene == SceneId::ManyBalls || spec.scene == SceneId::Street) // equal balls, per unit mass
-        return row(
+        return equationRow(
             QStringLiteral("I"), QStringLiteral("I/m = q r\u00b2"),
             tr("per unit mass: %1 \u00d7 (%2 %3)\u00b2 = %4 %3\u00b2").arg(num(q), num(r), u.length, num(q * r * r)));
     if (spec.scene == SceneId::TwoBalls) {
         const double m1 = v.real("m1"), m2 = v.real("m2");
-        return row(QStringLiteral("I"), formula,
-                   tr("q = %1, r = %2 %3: I1 = %4 kg %3\u00b2, I2 = %5 kg %3\u00b2")
-                       .arg(num(q), num(r), u.length, num(q * m1 * r * r), num(q * m2 * r * r)));
+        return equationRow(QStringLiteral("I"), formula,
+                           tr("q = %1, r = %2 %3: I1 = %4 kg %3\u00b2, I2 = %5 kg %3\u00b2")
+                               .arg(num(q), num(r), u.length, num(q * m1 * r * r), num(q * m2 * r * r)));
     }
     const double m = v.indexOf("m") ? v.real("m") : 1.0;
-    return row(QStringLiteral("I"), formula,
-               tr("%1 \u00d7 %2 kg \u00d7 (%3 %4)\u00b2 = %5 kg %4\u00b2")
-                   .arg(num(q), num(m), num(r), u.length, num(q * m * r * r)));
+    return equationRow(QStringLiteral("I"), formula,
+                       tr("%1 \u00d7 %2 kg \u00d7 (%3 %4)\u00b2 = %5 kg %4\u00b2")
+                           .arg(num(q), num(m), num(r), u.length, num(q * m * r * r)));
 }
 
 QString SpinEquations::floorRows(const Simulation& sim)
@@ -122,10 +117,11 @@ QString SpinEquations::floorRows(const Simulation& sim)
     if (!(g > 0.0))
         return {};
     // S2: the slip keeps its direction and shrinks at (1 + 1/q) mu g.
-    QString out = row(QStringLiteral("S2"),
-                      QStringLiteral("dv/dt = \u2212\u03bc g u/|u|,  d\u03c9/dt = \u03bc g (n \u00d7 u/|u|)/(q r)"),
-                      tr("sliding on the floor: \u03bc g = %1 %2/%3\u00b2 slows the centre and spins the ball up")
-                          .arg(num(mu * g), u.length, u.time));
+    QString out =
+        equationRow(QStringLiteral("S2"),
+                    QStringLiteral("dv/dt = \u2212\u03bc g u/|u|,  d\u03c9/dt = \u03bc g (n \u00d7 u/|u|)/(q r)"),
+                    tr("sliding on the floor: \u03bc g = %1 %2/%3\u00b2 slows the centre and spins the ball up")
+                        .arg(num(mu * g), u.length, u.time));
     QString stStart = tr("the time a ball sliding at slip |u| takes to roll");
     QString rolling = tr("the rolling state: the angular momentum about the contact point is kept; a ball "
                          "without spin rolls on at 1/(1 + q) of its speed (5/7 for a solid ball)");
@@ -148,8 +144,8 @@ QString SpinEquations::floorRows(const Simulation& sim)
                           .arg(num(v1.norm()), u.length, u.time, num(v1.norm() / vel.norm()), num(vel.norm()));
         }
     }
-    out += row(QStringLiteral("S3"), QStringLiteral("t* = q |u| / ((1 + q) \u03bc g)"), stStart);
-    out += row(QStringLiteral("S4"), QStringLiteral("v' = (v_t + q r \u03c9 \u00d7 n) / (1 + q)"), rolling);
+    out += equationRow(QStringLiteral("S3"), QStringLiteral("t* = q |u| / ((1 + q) \u03bc g)"), stStart);
+    out += equationRow(QStringLiteral("S4"), QStringLiteral("v' = (v_t + q r \u03c9 \u00d7 n) / (1 + q)"), rolling);
     return out;
 }
 
@@ -161,23 +157,25 @@ QString SpinEquations::impactRows(const RunSpec& spec)
                                ? tr("an impact that sticks: the contact point stops (\u03b2 = 0)")
                                : tr("an impact that sticks: the slip u becomes \u2212\u03b2 u = %1 u (\u03b2 = %2)")
                                      .arg(num(-beta), num(beta));
-    QString out = row(QStringLiteral("S9"), QStringLiteral("P_t = \u2212(1 + \u03b2) m* u,  m* = q m/(1 + q)"), sticks);
-    out += row(QStringLiteral("S10"), QStringLiteral("|P_t| = \u03bc P_n"),
-               tr("an impact that slides: at most \u03bc = %1 times the normal impulse (Walton: the smaller of "
-                  "S9 and S10)")
-                   .arg(num(mu)));
+    QString out =
+        equationRow(QStringLiteral("S9"), QStringLiteral("P_t = \u2212(1 + \u03b2) m* u,  m* = q m/(1 + q)"), sticks);
+    out += equationRow(QStringLiteral("S10"), QStringLiteral("|P_t| = \u03bc P_n"),
+                       tr("an impact that slides: at most \u03bc = %1 times the normal impulse (Walton: the smaller of "
+                          "S9 and S10)")
+                           .arg(num(mu)));
     if (manyBalls(spec.scene))
-        out += row(QStringLiteral("S11-S12"),
-                   QStringLiteral("\u0394v_i = P_t/m_i,  \u0394v_j = \u2212P_t/m_j,  \u0394\u03c9 = \u2212r n \u00d7 "
-                                  "(\u00b1P_t)/I"),
-                   tr("between two balls: their momentum is kept and both spins change in the same sense"));
-    out += row(QStringLiteral("S13"), QStringLiteral("m r n \u00d7 v' + I \u03c9' = m r n \u00d7 v + I \u03c9"),
-               tr("at a wall or the floor the angular momentum about the contact point is kept"));
+        out += equationRow(
+            QStringLiteral("S11-S12"),
+            QStringLiteral("\u0394v_i = P_t/m_i,  \u0394v_j = \u2212P_t/m_j,  \u0394\u03c9 = \u2212r n \u00d7 "
+                           "(\u00b1P_t)/I"),
+            tr("between two balls: their momentum is kept and both spins change in the same sense"));
+    out += equationRow(QStringLiteral("S13"), QStringLiteral("m r n \u00d7 v' + I \u03c9' = m r n \u00d7 v + I \u03c9"),
+                       tr("at a wall or the floor the angular momentum about the contact point is kept"));
     const char* restitution = manyBalls(spec.scene) ? "e" : "k";
     if (v.indexOf(restitution) && v.real(restitution) == 1.0 && beta == 1.0)
-        out += row(QStringLiteral("S9"), QStringLiteral("|u'| = |u|"),
-                   tr("%1 = 1 and \u03b2 = 1: an impact that sticks loses no energy (a superball)")
-                       .arg(QString::fromLatin1(restitution)));
+        out += equationRow(QStringLiteral("S9"), QStringLiteral("|u'| = |u|"),
+                           tr("%1 = 1 and \u03b2 = 1: an impact that sticks loses no energy (a superball)")
+                               .arg(QString::fromLatin1(restitution)));
     return out;
 }
 

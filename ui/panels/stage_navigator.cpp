@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "stage_navigator.h"
 
+#include "equation_rows.h"
+
 #include "ui/i18n/core_text.h"
 
 #include <QButtonGroup>
@@ -112,7 +114,7 @@ QString StageNavigator::describe(const SceneInfo& s, int revealed)
             newest ? QStringLiteral("<a name='%1'></a>").arg(QLatin1String(kNewestAnchor)) : QString();
         out += QStringLiteral("<tr><td>%1(%2)</td><td>%3</td></tr><tr><td></td><td><i>%4</i></td></tr>")
                    .arg(anchor, QString::fromStdString(e.number).toHtmlEscaped(),
-                        formula.arg(QString::fromStdString(e.text).toHtmlEscaped()), html(e.meaning));
+                        formula.arg(formulaHtml(QString::fromStdString(e.text))), html(e.meaning));
     }
     out += QStringLiteral("</table>");
     if (!s.notes.empty() && shown == static_cast<int>(s.equations.size())) {
@@ -135,7 +137,9 @@ void StageNavigator::setCurrent(SceneId scene)
 
 QString StageNavigator::text() const
 {
-    return text_->toPlainText();
+    // The formulas hold together with no-break spaces and word joiners (formulaHtml): plain
+    // spaces, and nothing, to read.
+    return text_->toPlainText().replace(QChar(0x00A0), QLatin1Char(' ')).remove(QChar(0x2060));
 }
 
 void StageNavigator::setWalking(bool on)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "street_equations.h"
 
+#include "equation_rows.h"
 #include "run_options_panel.h"
 
 #include <cmath>
@@ -13,12 +14,6 @@ namespace {
 QString num(double x)
 {
     return QString::number(x, 'g', 3);
-}
-
-QString row(const QString& number, const QString& formula, const QString& meaning)
-{
-    return QStringLiteral("<tr><td>(%1)</td><td><tt>%2</tt></td></tr><tr><td></td><td><i>%3</i></td></tr>")
-        .arg(number, formula.toHtmlEscaped(), meaning.toHtmlEscaped());
 }
 
 } // namespace
@@ -40,17 +35,17 @@ QString StreetEquations::html(const RunSpec& spec)
     // St1 (rolling): m a = m g sin(theta) - f and f = q m a give a = g sin(theta) / (1 + q).
     // St2 (sliding): a = g (sin(theta) - mu cos(theta)), friction mu m g cos(theta) uphill.
     const double a = rolls ? g * std::sin(theta) / (1.0 + q) : g * (std::sin(theta) - mu * std::cos(theta));
-    out +=
-        row(rolls ? QStringLiteral("St1") : QStringLiteral("St2"),
-            rolls ? QStringLiteral("a = g sin(theta) / (1 + q)") : QStringLiteral("a = g (sin(theta) - mu cos(theta))"),
-            tr("down a block of %1 deg: a = %2 m/s\u00b2 (%3)")
-                .arg(num(v.real("slope")), num(a), rolls ? tr("rolling") : tr("sliding")));
-    out += row(QStringLiteral("St3"), QStringLiteral("mu >= q tan(theta) / (1 + q)"),
-               tr("rolling needs mu >= %1; here mu = %2: a ball set down on a block %3")
-                   .arg(num(needed), num(mu), rolls ? tr("rolls") : tr("slides")));
+    out += equationRow(rolls ? QStringLiteral("St1") : QStringLiteral("St2"),
+                       rolls ? QStringLiteral("a = g sin(theta) / (1 + q)")
+                             : QStringLiteral("a = g (sin(theta) - mu cos(theta))"),
+                       tr("down a block of %1 deg: a = %2 m/s\u00b2 (%3)")
+                           .arg(num(v.real("slope")), num(a), rolls ? tr("rolling") : tr("sliding")));
+    out += equationRow(QStringLiteral("St3"), QStringLiteral("mu >= q tan(theta) / (1 + q)"),
+                       tr("rolling needs mu >= %1; here mu = %2: a ball set down on a block %3")
+                           .arg(num(needed), num(mu), rolls ? tr("rolls") : tr("slides")));
     // From rest at a block's top, uniform acceleration over its length L: v^2 = 2 a L.
     const double foot = std::sqrt(std::max(2.0 * a * length, 0.0));
-    out += row(
+    out += equationRow(
         QStringLiteral("St1-St2"), QStringLiteral("v = sqrt(2 a L)"),
         tr("from rest at a block's top, a ball reaches its foot at %1 m/s, %2 km/h").arg(num(foot), num(3.6 * foot)));
     // St4-St5: leaving a crossing's edge level at speed v, the ball flies x = v t, y = -g t^2 / 2
@@ -58,15 +53,15 @@ QString StreetEquations::html(const RunSpec& spec)
     // t = 2 v tan(theta) / g, x = 2 v^2 tan(theta) / g.
     if (blocks > 1) {
         const double t = 2.0 * foot * std::tan(theta) / g, x = foot * t;
-        out += row(QStringLiteral("St4-St5"), QStringLiteral("x = 2 v\u00b2 tan(theta) / g"),
-                   tr("leaving a crossing at that speed, a ball flies %1 s and lands %2 m down the next block")
-                       .arg(num(t), num(x)));
+        out += equationRow(QStringLiteral("St4-St5"), QStringLiteral("x = 2 v\u00b2 tan(theta) / g"),
+                           tr("leaving a crossing at that speed, a ball flies %1 s and lands %2 m down the next block")
+                               .arg(num(t), num(x)));
     }
     // The street's whole drop H = B L sin(theta); g H per unit mass is what gravity gives.
     const double drop = blocks * length * std::sin(theta);
-    out += row(QStringLiteral("E"), QStringLiteral("g H = g B L sin(theta)"),
-               tr("the street drops %1 m: %2 J per kg, the speed sqrt(2 g H) = %3 m/s if none were lost")
-                   .arg(num(drop), num(g * drop), num(std::sqrt(2.0 * g * drop))));
+    out += equationRow(QStringLiteral("E"), QStringLiteral("g H = g B L sin(theta)"),
+                       tr("the street drops %1 m: %2 J per kg, the speed sqrt(2 g H) = %3 m/s if none were lost")
+                           .arg(num(drop), num(g * drop), num(std::sqrt(2.0 * g * drop))));
     out += QStringLiteral("</table><p><i>%1</i></p>").arg(RunOptionsPanel::noReportModelReason().toHtmlEscaped());
     return out;
 }

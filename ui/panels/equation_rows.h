@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Equations as the navigator and the run's own equation panels set them: a formula that a
+// narrow column (lecture mode's large text) breaks only between its parts, and a row of
+// number, formula and meaning.
+#pragma once
+
+#include <QString>
+
+namespace ab::ui {
+
+// `formula` as HTML that breaks only after a comma ending one relation ("a = ..., r w = v")
+// and before a relation or the sign of a sum or a quotient ("= ...", "+ ...", "/ ..."), and
+// between words of prose beside it.
+// Every other space holds (a no-break space, and a word joiner after "-" and "/"): "mu g
+// cos(theta)" and "(q r)" stay whole.
+QString formulaHtml(const QString& formula);
+
+// One equation: its number, the formula (formulaHtml) and, on the line below, what it means.
+QString equationRow(const QString& number, const QString& formula, const QString& meaning);
+
+} // namespace ab::ui
