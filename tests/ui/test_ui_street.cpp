@@ -426,6 +426,18 @@ private slots:
         QVERIFY(camera.project(QVector3D(mid, road, 0.5f * float(s.width)), view, nearKerb));
         QVERIFY(camera.project(QVector3D(mid, road, -0.5f * float(s.width)), view, farKerb));
         QVERIFY2(nearKerb.y() - farKerb.y() > 6.0, qPrintable(QString::number(nearKerb.y() - farKerb.y())));
+        // Framed on the street, not its bounding box, in a wide view and in the window's tall
+        // one: the road from the top to 20 m past the foot, and the top's label, are in the
+        // picture, and the road spans most of its width (a tenth of the picture was used).
+        for (const QSize size : {view, QSize(840, 990)}) {
+            const OrbitCamera c = cameraAt(s, StreetShot::Side, size);
+            QPointF top2, run, label;
+            QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height), 0.0f), size, top2));
+            QVERIFY(c.project(QVector3D(float(s.xFoot) + 20.0f, 0.0f, 0.0f), size, run));
+            QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height + 8.0), 0.0f), size, label));
+            QVERIFY(onScreen(top2, size) && onScreen(run, size) && onScreen(label, size));
+            QVERIFY2(run.x() - top2.x() > 0.75 * size.width(), qPrintable(QString::number(run.x() - top2.x())));
+        }
     }
 
     void floodShotFollowsTheFrontAndIgnoresGoneBallsAndALoneRunaway()

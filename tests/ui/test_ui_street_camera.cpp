@@ -187,6 +187,35 @@ private slots:
         QVERIFY(solids.clear(camera.eye()));
     }
 
+    void fitFillsTheViewWithThePointsNotTheirBox()
+    {
+        // A long thin diagonal, 270 m by 70 m: every point in view, the farthest within the
+        // margin of an edge, and the picture's middle between their extents.
+        std::vector<QVector3D> points;
+        for (int i = 0; i <= 10; ++i)
+            for (float z : {-9.0f, 9.0f})
+                points.emplace_back(27.0f * float(i), 70.0f - 7.0f * float(i), z);
+        for (const QSize size : {QSize(1600, 900), QSize(840, 990)}) {
+            OrbitCamera c;
+            const float aspect = float(size.width()) / float(size.height());
+            c.fit(points, 40.0f, 24.0f, aspect, 0.05f);
+            double xLo = 1e9, xHi = -1e9, yLo = 1e9, yHi = -1e9;
+            for (const QVector3D& p : points) {
+                QPointF at;
+                QVERIFY(c.project(p, size, at));
+                xLo = std::min(xLo, at.x()), xHi = std::max(xHi, at.x());
+                yLo = std::min(yLo, at.y()), yHi = std::max(yHi, at.y());
+            }
+            QVERIFY(xLo >= 0.0 && yLo >= 0.0 && xHi <= size.width() && yHi <= size.height());
+            // 5 % of the half-extent to spare on the side that binds: 2.5 % of the picture.
+            const double spareX = std::min(xLo, size.width() - xHi) / size.width();
+            const double spareY = std::min(yLo, size.height() - yHi) / size.height();
+            QVERIFY2(std::min(spareX, spareY) < 0.03, qPrintable(QString("%1 %2").arg(spareX).arg(spareY)));
+            QVERIFY(std::abs(xLo - (size.width() - xHi)) < 0.01 * size.width());   // centred across
+            QVERIFY(std::abs(yLo - (size.height() - yHi)) < 0.01 * size.height()); // and up and down
+        }
+    }
+
     void theRayMeetsTheRoadAndTheSkyIsEmpty()
     {
         const auto s = streetLayout();

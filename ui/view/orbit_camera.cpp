@@ -31,6 +31,39 @@ void OrbitCamera::frame(const QVector3D& lo, const QVector3D& hi, float yawDeg, 
     distance_ = 1.08f * needed; // a margin for the labels beside the box
 }
 
+void OrbitCamera::fit(const std::vector<QVector3D>& points, float yawDeg, float pitchDeg, float aspect, float margin)
+{
+    if (points.empty())
+        return;
+    QVector3D lo = points.front(), hi = lo;
+    for (const QVector3D& p : points) {
+        lo = QVector3D(std::min(lo.x(), p.x()), std::min(lo.y(), p.y()), std::min(lo.z(), p.z()));
+        hi = QVector3D(std::max(hi.x(), p.x()), std::max(hi.y(), p.y()), std::max(hi.z(), p.z()));
+    }
+    frame(lo, hi, yawDeg, pitchDeg, aspect); // a start that sees them all
+    const float tanV = std::tan(qDegreesToRadians(fovY_) / 2.0f), tanH = tanV * std::max(aspect, 0.1f);
+    // A point at depth d (from the eye) and (x, y) across stands at (x / (d tanH), y / (d tanV))
+    // of the view's half-width and half-height. Each round moves the target to the middle of
+    // the points' extents (at the target's depth, a shift s moves them by s / (D tan)) and
+    // scales the distance D by their largest half-extent over 1 - margin; a few rounds settle it.
+    for (int round = 0; round < 12; ++round) {
+        const QMatrix4x4 v = view();
+        float xLo = 1e9f, xHi = -1e9f, yLo = 1e9f, yHi = -1e9f;
+        for (const QVector3D& p : points) {
+            const QVector3D c = v.map(p);
+            const float depth = std::max(-c.z(), 1e-3f * distance_);
+            xLo = std::min(xLo, c.x() / (depth * tanH));
+            xHi = std::max(xHi, c.x() / (depth * tanH));
+            yLo = std::min(yLo, c.y() / (depth * tanV));
+            yHi = std::max(yHi, c.y() / (depth * tanV));
+        }
+        const QVector3D right(v(0, 0), v(0, 1), v(0, 2)), up(v(1, 0), v(1, 1), v(1, 2));
+        target_ += distance_ * (0.5f * (xLo + xHi) * tanH * right + 0.5f * (yLo + yHi) * tanV * up);
+        const float half = std::max(0.5f * (xHi - xLo), 0.5f * (yHi - yLo));
+        distance_ *= std::clamp(half / (1.0f - margin), 0.5f, 2.0f);
+    }
+}
+
 void OrbitCamera::orbit(float dxPixels, float dyPixels)
 {
     yaw_ = std::fmod(yaw_ - 0.4f * dxPixels, 360.0f);

@@ -11,6 +11,7 @@
 #include <QVector3D>
 
 #include <cmath>
+#include <vector>
 
 namespace ab::ui {
 
@@ -29,6 +30,11 @@ public:
     // Looks at the centre of the box [lo, hi] from `yawDeg`, `pitchDeg`, far enough to see
     // all of it in a view of aspect `aspect` (width / height).
     void frame(const QVector3D& lo, const QVector3D& hi, float yawDeg, float pitchDeg, float aspect);
+    // Looks from `yawDeg`, `pitchDeg` at `points`, the target placed and the distance chosen so
+    // that they fill a view of aspect `aspect` with `margin` of its half-width and half-height
+    // to spare: a long diagonal (the street from the side) is not framed by its bounding box,
+    // whose empty corners left most of the picture bare.
+    void fit(const std::vector<QVector3D>& points, float yawDeg, float pitchDeg, float aspect, float margin = 0.05f);
 
     void orbit(float dxPixels, float dyPixels);
     void turn(float yawDegrees) { yaw_ = std::fmod(yaw_ + yawDegrees, 360.0f); }

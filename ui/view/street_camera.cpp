@@ -94,7 +94,8 @@ bool ballHidden(const street::Layout& street, float x)
 
 CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, std::optional<float> front)
 {
-    const auto across = float(0.5 * s.width + s.sidewalk);
+    // The near house fronts (cut away in the side shot) and the far houses' backs.
+    const auto near = float(0.5 * s.width + s.sidewalk), far = near + 3.0f;
     switch (shot) {
     case StreetShot::Foot: {
         // The advert's shot: a long lens low on the flat street 45 m past the foot, looking
@@ -112,12 +113,28 @@ CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, st
         return pose;
     }
     case StreetShot::Side: {
-        // From the +z side, 24 deg above and turned 25 deg downhill, far enough back to hold it
-        // all: the road shows its width, and the flood on it, over the near houses (cut away);
-        // level with the street it was a line.
+        // From the +z side, 24 deg above and turned 25 deg downhill: the road shows its width,
+        // and the flood on it, over the near houses (cut away); level with the street it was
+        // a line. Framed on the street itself: the road's edges at the top, at each block's
+        // ends and 20 m past the foot, the far houses' roofs over them, and the top's label.
+        std::vector<QVector3D> points;
+        auto across = [&](double x, double above) {
+            for (float z : {-far, near})
+                points.emplace_back(float(x), float(s.roadY(x) + above), z);
+        };
+        for (double x : {s.xTop, s.xFoot, s.xFoot + 20.0})
+            across(x, 0.0);
+        for (std::size_t k = 0; k < s.blockStartX.size(); ++k) {
+            across(s.blockStartX[k], 12.0);
+            across(s.blockFootX[k], 0.0);
+        }
+        points.emplace_back(float(s.xTop), float(s.height + 10.0), 0.0f); // the label over the top
+        // A narrower view turns further downhill (up to 55 deg at aspect 0.85 and under), so that
+        // the street runs across its height too instead of leaving it bare above and below.
+        const float yaw = std::clamp(25.0f + 40.0f * (1.6f - aspect), 25.0f, 55.0f);
         OrbitCamera c;
-        c.frame({float(s.xTop), 0.0f, -across}, {float(s.xFoot), float(s.height), across}, 25.0f, 24.0f, aspect);
-        return {c.target(), c.yaw(), c.pitch(), c.distance() * 0.92f};
+        c.fit(points, yaw, 24.0f, aspect);
+        return {c.target(), c.yaw(), c.pitch(), c.distance()};
     }
     case StreetShot::Flood: {
         // Ahead of the front and above it, over the near sidewalk, looking back up at it.
