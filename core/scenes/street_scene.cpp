@@ -101,7 +101,8 @@ SceneInfo makeStreet()
                 "the simulation was done in a simplified environment, a box, to establish that the basic functions "
                 "work.\" The report's rules have no slope, kerb or crossing: this stage is the physical model's."},
         {"3.1", "\"Originally gravity, slope and rotation were to give the balls their initial speed and direction.\" "
-                "Here the balls start almost at rest (speed) above the top block."},
+                "Here the balls start almost at rest above the top block, each velocity component at most v_max "
+                "(speed, 0.5 m/s by default): gravity and slope do the rest."},
     };
     return s;
 }

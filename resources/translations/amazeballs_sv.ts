@@ -3085,10 +3085,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Boll 1 snurrar kring den lodräta axeln med 4 rad/s och rullar med 5 m/s in i boll 2, som ligger stilla utan rotation; tyngdkraften är avstängd, så inget annat rör dem förrän väggarna, 5.7 s senare. Vid kontakten griper friktionen (mu = 0.5, beta = 0): en enda tangentiell impuls verkar på de två bollarna i deras gemensamma kontaktpunkt, i motsatta riktningar, så rörelsemängden bevaras (de glider isär i sidled med 1.14 m/s var) och båda rotationerna ändras lika mycket åt samma håll (S11-S12): boll 1 behåller 2.57 rad/s och boll 2 börjar snurra med -1.43 rad/s, som ett kugghjul som drivs av det första. Välj boll 2 i diagrammen för att följa dess rotation.</translation>
     </message>
     <message>
-        <source>&quot;Originally gravity, slope and rotation were to give the balls their initial speed and direction.&quot; Here the balls start almost at rest (speed) above the top block.</source>
-        <translation>&quot;Ursprungligen skulle gravitation, lutning och rotation ge bollarna deras begynnelsehastighet och riktning.&quot; Här startar bollarna nästan i vila (speed) ovanför det översta kvarteret.</translation>
-    </message>
-    <message>
         <source>&quot;The basic idea was that the balls would bounce down a street like the picture from Sony&apos;s advert; the simulation was done in a simplified environment, a box, to establish that the basic functions work.&quot; The report&apos;s rules have no slope, kerb or crossing: this stage is the physical model&apos;s.</source>
         <translation>&quot;Grundidén var att bollarna skulle studsa nedför en gata som på bilden från Sonys reklamfilm; simuleringen gjordes i en förenklad miljö, en kub, för att visa att de grundläggande funktionerna fungerar.&quot; Rapportens regler har ingen lutning, trottoarkant eller korsning: den här etappen hör till den fysikaliska modellen.</translation>
     </message>
@@ -3247,6 +3243,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>One ball set down without rebound (e = 0) on a 17 deg block, 48.7 m up the road from the foot (the hopper&apos;s lowest site). Once it has landed, friction (mu = 0.5, more than q tan(theta)/(1 + q) = 0.087) keeps it rolling without slipping: it accelerates at a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 deg = 2.051 m/s^2, not the 2.871 m/s^2 of a ball sliding without friction, and r w = v all the way (eq St1). The velocity chart rises in a straight line; after t = v/a = 6.9 s it reaches the foot at v = sqrt(2 a d) = sqrt(2 x 2.051 x 48.7) = 14.1 m/s and leaves the street.</source>
         <translation>En boll som sätts ned utan studs (e = 0) på ett kvarter med 17 graders lutning, 48.7 m upp längs vägen från foten (behållarens lägsta plats). När den har landat håller friktionen (mu = 0.5, mer än q tan(theta)/(1 + q) = 0.087) den rullande utan glidning: den accelererar med a = g sin(theta)/(1 + q) = 5/7 x 9.82 x sin 17 grader = 2.051 m/s^2, inte med de 2.871 m/s^2 som en boll som glider utan friktion får, och r w = v hela vägen (ekv. St1). Hastighetsdiagrammet stiger i en rät linje; efter t = v/a = 6.9 s når den foten med v = sqrt(2 a d) = sqrt(2 x 2.051 x 48.7) = 14.1 m/s och lämnar gatan.</translation>
+    </message>
+    <message>
+        <source>&quot;Originally gravity, slope and rotation were to give the balls their initial speed and direction.&quot; Here the balls start almost at rest above the top block, each velocity component at most v_max (speed, 0.5 m/s by default): gravity and slope do the rest.</source>
+        <translation>&quot;Ursprungligen skulle gravitation, lutning och rotation ge bollarna deras begynnelsehastighet och riktning.&quot; Här startar bollarna nästan i vila ovanför det översta kvarteret, varje hastighetskomponent högst v_max (speed, 0,5 m/s som standard): gravitation och lutning gör resten.</translation>
     </message>
 </context>
 <context>

@@ -105,13 +105,15 @@ private slots:
     void aFormulaBreaksOnlyBetweenItsParts()
     {
         // The navigator at lecture size in a narrow column: a formula's line may end after a
-        // comma that closes one relation, before "=", "+", "-" or "/", or between words of prose
-        // beside it, never inside a product ("mu" | "g cos(theta)" before) or a name.
+        // comma that closes one relation, before "=", "+", "-" or "/", between words of prose
+        // beside it or before a note in brackets, never inside a product ("mu" | "g cos(theta)"
+        // before), a short bracket ("(1" | "+ q)") or a name.
         QTextDocument doc;
         QFont big = QApplication::font();
         big.setPointSizeF(big.pointSizeF() * ab::ui::LectureMode::scale);
         doc.setDefaultFont(big);
-        const QRegularExpression prose(QStringLiteral("^[A-Za-z']{4,}$")); // words beside a formula
+        const QRegularExpression prose(QStringLiteral("^[A-Za-z']{4,}$"));      // words beside a formula
+        const QRegularExpression note(QStringLiteral("^\\([A-Za-z']{4,}\\)$")); // "(normalised)"
         int breaks = 0;
         for (const ab::SceneInfo* scene : ab::allScenes()) {
             doc.setHtml(ab::ui::StageNavigator::describe(*scene));
@@ -133,10 +135,15 @@ private slots:
                     const QString before = plain(shown.left(at)), after = plain(shown.mid(at));
                     const bool clean = before.endsWith(',') || after.startsWith("= ") || after.startsWith("+ ") ||
                                        after.startsWith("- ") || after.startsWith("/ ") || after.startsWith("<") ||
+                                       note.match(after.section(' ', 0, 0)).hasMatch() ||
                                        (prose.match(before.section(' ', -1)).hasMatch() &&
                                         prose.match(after.section(' ', 0, 0)).hasMatch());
                     QVERIFY2(clean, qPrintable(QString("%1 | %2").arg(before, after)));
                     QVERIFY2(!shown.at(at).isSpace(), qPrintable(after)); // no line starts indented
+                    // A short bracket ("(1 + q)") is one term: the break is not inside one.
+                    const int opened = int(before.count('(')) - int(before.count(')'));
+                    QVERIFY2(opened <= 0 || before.size() - before.lastIndexOf('(') + after.indexOf(')') > 16,
+                             qPrintable(QString("%1 | %2").arg(before, after)));
                     ++breaks;
                 }
             }

@@ -362,7 +362,8 @@ const char* const listed[] = {
     QT_TRANSLATE_NOOP("core", "compare with %1: the two runs do not start at the same time with the same balls"),
     // Stage 5, the street.
     QT_TRANSLATE_NOOP("core", "\"Originally gravity, slope and rotation were to give the balls their initial speed and "
-                              "direction.\" Here the balls start almost at rest (speed) above the top block."),
+                              "direction.\" Here the balls start almost at rest above the top block, each velocity "
+                              "component at most v_max (speed, 0.5 m/s by default): gravity and slope do the rest."),
     QT_TRANSLATE_NOOP(
         "core", "\"The basic idea was that the balls would bounce down a street like the picture from Sony's advert; "
                 "the simulation was done in a simplified environment, a box, to establish that the basic functions "

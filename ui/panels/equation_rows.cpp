@@ -4,6 +4,7 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <vector>
 
 namespace ab::ui {
 
@@ -17,6 +18,25 @@ bool isWord(const QString& token)
            std::all_of(token.begin(), token.end(), [](QChar c) { return c.isLetter() || c == '\''; });
 }
 
+// For each character of `formula`, whether it lies in a bracket no longer than `shortest`
+// characters, brackets included: "(1 + q)" is read as one term and never broken.
+std::vector<bool> inShortBrackets(const QString& formula, qsizetype shortest)
+{
+    std::vector<bool> held(std::size_t(formula.size()), false);
+    std::vector<qsizetype> open;
+    for (qsizetype i = 0; i < formula.size(); ++i) {
+        if (formula[i] == '(' || formula[i] == '[')
+            open.push_back(i);
+        else if ((formula[i] == ')' || formula[i] == ']') && !open.empty()) {
+            const qsizetype from = open.back();
+            open.pop_back();
+            if (i - from + 1 <= shortest)
+                std::fill(held.begin() + from, held.begin() + i + 1, true);
+        }
+    }
+    return held;
+}
+
 } // namespace
 
 QString formulaHtml(const QString& formula)
@@ -25,6 +45,7 @@ QString formulaHtml(const QString& formula)
     // (minus, approximately, at most, at least, not equal).
     static const QStringList breakBefore = {
         "=", "+", "-", "/", "<", ">", "<=", ">=", "->", "~", "\u2212", "\u2248", "\u2264", "\u2265", "\u2260"};
+    const std::vector<bool> held = inShortBrackets(formula, 16);
     QString out;
     for (qsizetype i = 0; i < formula.size(); ++i) {
         const QChar c = formula[i];
@@ -46,7 +67,11 @@ QString formulaHtml(const QString& formula)
         const qsizetype start = formula.lastIndexOf(' ', run - 1) + 1;
         const QString previous = formula.mid(start, run - start);
         const bool afterComma = run > 0 && formula[run - 1] == ',';
-        const bool breaks = afterComma || breakBefore.contains(next) || (isWord(previous) && isWord(next));
+        // A note in brackets after the formula, "(normalised)", may go to the next line.
+        const bool note =
+            next.size() > 2 && next.startsWith('(') && next.endsWith(')') && isWord(next.mid(1, next.size() - 2));
+        const bool breaks = !held[std::size_t(i)] &&
+                            (afterComma || breakBefore.contains(next) || note || (isWord(previous) && isWord(next)));
         out += breaks ? QStringLiteral(" ") : QStringLiteral("&nbsp;");
     }
     return out;

@@ -10,7 +10,8 @@ namespace ab::ui {
 
 // `formula` as HTML that breaks only after a comma ending one relation ("a = ..., r w = v")
 // and before a relation or the sign of a sum or a quotient ("= ...", "+ ...", "/ ..."), and
-// between words of prose beside it.
+// between words of prose beside it or before a note in brackets ("(normalised)"); never
+// inside a bracket of 16 characters or fewer.
 // Every other space holds (a no-break space, and a word joiner after "-" and "/"): "mu g
 // cos(theta)" and "(q r)" stay whole.
 QString formulaHtml(const QString& formula);
