@@ -71,6 +71,8 @@ public:
     SceneId scene() const { return scene_; }
 
     void setTurntable(bool on);
+    // Lecture mode takes Space and the arrows for its walk: Help > Keys and mouse says so.
+    void setLectureKeys(bool on) { lectureKeys_ = on; }
 
     // Goes on with `old`'s run as it stands (a language switch builds the window anew):
     // every stage's setup, the run with its recording, time, comparison, speed and
@@ -141,6 +143,7 @@ private:
     QTimer panelTimer_;
     int panelPart_ = -1;
     bool panelsPlaying_ = false;
+    bool lectureKeys_ = false;
     QElapsedTimer fpsClock_;
     int framesSinceFps_ = 0;
     QTimer turntable_;

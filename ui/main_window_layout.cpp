@@ -5,6 +5,7 @@
 #include "about_box.h"
 #include "figures/figure_actions.h"
 #include "i18n/core_text.h"
+#include "keys_dialog.h"
 #include "panels/parameter_panel.h"
 #include "panels/stage_navigator.h"
 #include "panels/status_readout.h"
@@ -354,25 +355,9 @@ void MainWindow::buildMenus()
 
 void MainWindow::showKeys()
 {
-    QMessageBox::information(
-        this, tr("Keys and mouse"),
-        tr("<table>"
-           "<tr><td><b>Space</b></td><td>play / pause</td></tr>"
-           "<tr><td><b>Right</b></td><td>one step</td></tr>"
-           "<tr><td><b>R</b></td><td>reset the run</td></tr>"
-           "<tr><td><b>[ ]</b></td><td>slower / faster</td></tr>"
-           "<tr><td><b>1 - 5</b></td><td>the report's four stages and the street; PgUp / PgDn: previous / "
-           "next</td></tr>"
-           "<tr><td><b>Ctrl+E</b></td><td>export the current chart (Ctrl+Shift+E: its data as CSV)</td></tr>"
-           "<tr><td><b>Home</b></td><td>reset the 3D view; T: turntable</td></tr>"
-           "<tr><td><b>F S G</b></td><td>the street's camera: from the foot, from the side, following the "
-           "flood</td></tr>"
-           "<tr><td colspan=2><br><b>3D view</b>: left drag orbits, right or middle drag (or Shift+left) pans, "
-           "the wheel zooms (on the street towards what is under the pointer, and the camera stops short "
-           "of the road, the houses and the cars), a click selects a ball, a double click on empty space "
-           "resets the view. "
-           "After a click in the view the arrow keys move the camera as in the report's WebGL program; "
-           "Esc gives them back to the transport.</td></tr></table>"));
+    QDialog* keys = makeKeysDialog(this, lectureKeys_);
+    keys->setAttribute(Qt::WA_DeleteOnClose);
+    keys->open();
 }
 
 void MainWindow::showAbout()

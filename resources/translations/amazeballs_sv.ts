@@ -172,6 +172,117 @@
     </message>
 </context>
 <context>
+    <name>MainWindow</name>
+    <message>
+        <source>Space, Right, PgDn</source>
+        <translation>Mellanslag, Högerpil, PgDn</translation>
+    </message>
+    <message>
+        <source>lecture mode: the next equation, then the next stage</source>
+        <translation>föreläsningsläge: nästa ekvation, sedan nästa etapp</translation>
+    </message>
+    <message>
+        <source>Left, PgUp</source>
+        <translation>Vänsterpil, PgUp</translation>
+    </message>
+    <message>
+        <source>lecture mode: back one equation</source>
+        <translation>föreläsningsläge: en ekvation tillbaka</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Spela</translation>
+    </message>
+    <message>
+        <source>the Play button runs the stage (Space walks the equations here)</source>
+        <translation>knappen Spela kör etappen (Mellanslag går igenom ekvationerna här)</translation>
+    </message>
+    <message>
+        <source>F11</source>
+        <translation>F11</translation>
+    </message>
+    <message>
+        <source>full screen; Esc leaves it</source>
+        <translation>helskärm; Esc lämnar den</translation>
+    </message>
+    <message>
+        <source>Space</source>
+        <translation>Mellanslag</translation>
+    </message>
+    <message>
+        <source>play / pause</source>
+        <translation>spela / pausa</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Högerpil</translation>
+    </message>
+    <message>
+        <source>one step</source>
+        <translation>ett steg</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>reset the run</source>
+        <translation>återställ körningen</translation>
+    </message>
+    <message>
+        <source>[ ]</source>
+        <translation>[ ]</translation>
+    </message>
+    <message>
+        <source>slower / faster</source>
+        <translation>långsammare / snabbare</translation>
+    </message>
+    <message>
+        <source>1 - 5</source>
+        <translation>1 - 5</translation>
+    </message>
+    <message>
+        <source>the report&apos;s four stages and the street</source>
+        <translation>rapportens fyra etapper och gatan</translation>
+    </message>
+    <message>
+        <source>the report&apos;s four stages and the street; PgUp / PgDn: previous / next</source>
+        <translation>rapportens fyra etapper och gatan; PgUp / PgDn: föregående / nästa</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>export the current chart (Ctrl+Shift+E: its data as CSV)</source>
+        <translation>exportera aktuellt diagram (Ctrl+Shift+E: dess data som CSV)</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Home</translation>
+    </message>
+    <message>
+        <source>reset the 3D view; T: turntable</source>
+        <translation>återställ 3D-vyn; T: snurrbord</translation>
+    </message>
+    <message>
+        <source>F S G</source>
+        <translation>F S G</translation>
+    </message>
+    <message>
+        <source>the street&apos;s camera: from the foot, from the side, following the flood</source>
+        <translation>gatans kamera: från foten, från sidan, följ floden</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;3D view&lt;/b&gt;: left drag orbits, right or middle drag (or Shift+left) pans, the wheel zooms (on the street towards what is under the pointer, and the camera stops short of the road, the houses and the cars), a click selects a ball, a double click on empty space resets the view. After a click in the view the arrow keys move the camera as in the report&apos;s WebGL program; Esc gives them back.</source>
+        <translation>&lt;b&gt;3D-vyn&lt;/b&gt;: dra med vänster knapp för att kretsa, med höger eller mittknapp (eller Shift+vänster) för att panorera, hjulet zoomar (på gatan mot det som är under pekaren, och kameran stannar en bit från vägbanan, husen och bilarna), ett klick väljer en boll, ett dubbelklick på tom yta återställer vyn. Efter ett klick i vyn flyttar piltangenterna kameran som i rapportens WebGL-program; Esc lämnar tillbaka dem.</translation>
+    </message>
+    <message>
+        <source>Keys and mouse</source>
+        <translation>Tangenter och mus</translation>
+    </message>
+</context>
+<context>
     <name>QMainWindow</name>
     <message>
         <source>&amp;Tools</source>
@@ -1018,10 +1129,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Street: follow the flood</source>
         <translation>Gatan: följ floden</translation>
-    </message>
-    <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play / pause&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;one step&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;reset the run&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;slower / faster&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1 - 5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the report&apos;s four stages and the street; PgUp / PgDn: previous / next&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+E&lt;/b&gt;&lt;/td&gt;&lt;td&gt;export the current chart (Ctrl+Shift+E: its data as CSV)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;reset the 3D view; T: turntable&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F S G&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the street&apos;s camera: from the foot, from the side, following the flood&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td colspan=2&gt;&lt;br&gt;&lt;b&gt;3D view&lt;/b&gt;: left drag orbits, right or middle drag (or Shift+left) pans, the wheel zooms (on the street towards what is under the pointer, and the camera stops short of the road, the houses and the cars), a click selects a ball, a double click on empty space resets the view. After a click in the view the arrow keys move the camera as in the report&apos;s WebGL program; Esc gives them back to the transport.&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mellanslag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;spela / pausa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Högerpil&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ett steg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ körningen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;långsammare / snabbare&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1 - 5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rapportens fyra etapper och gatan; PgUp / PgDn: föregående / nästa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+E&lt;/b&gt;&lt;/td&gt;&lt;td&gt;exportera aktuellt diagram (Ctrl+Shift+E: dess data som CSV)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;återställ 3D-vyn; T: snurrbord&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F S G&lt;/b&gt;&lt;/td&gt;&lt;td&gt;gatans kamera: från foten, från sidan, följ floden&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td colspan=2&gt;&lt;br&gt;&lt;b&gt;3D-vyn&lt;/b&gt;: dra med vänster knapp för att kretsa, med höger eller mittknapp (eller Shift+vänster) för att panorera, hjulet zoomar (på gatan mot det som är under pekaren, och kameran stannar en bit från vägbanan, husen och bilarna), ett klick väljer en boll, ett dubbelklick på tom yta återställer vyn. Efter ett klick i vyn flyttar piltangenterna kameran som i rapportens WebGL-program; Esc lämnar tillbaka dem till uppspelningen.&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>

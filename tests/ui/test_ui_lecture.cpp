@@ -15,12 +15,14 @@
 #include <QAbstractTextDocumentLayout>
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
@@ -231,6 +233,42 @@ private slots:
         lecture.previous();
         QCOMPARE(nav.revealed(), count - 1);
         QCOMPARE(shownEquations(nav), firstShown(nav, count - 1));
+    }
+
+    void keysHelpSaysWhatTheKeysDoAndFitsTheScreen()
+    {
+        // Help > Keys and mouse in lecture mode: Space and the arrows walk the equations there
+        // (it said "Right: one step"), and the box fits the screen's free height at lecture
+        // size (it was 787 px tall on a 720 px screen, its OK button off the bottom).
+        ab::ui::WindowShell shell;
+        MainWindow& w = shell.window();
+        w.show();
+        auto* keys = [&]() -> QAction* {
+            for (QAction* a : w.findChildren<QAction*>())
+                if (a->text() == QStringLiteral("Keys and mouse"))
+                    return a;
+            return nullptr;
+        }();
+        QVERIFY(keys);
+        auto shown = [&] {
+            keys->trigger();
+            auto* dialog = w.findChild<QDialog*>("keysDialog");
+            auto* text = dialog ? dialog->findChild<QTextBrowser*>("keysText") : nullptr;
+            return std::pair{dialog, text ? text->toPlainText() : QString()};
+        };
+        auto [plain, plainText] = shown();
+        QVERIFY(plain && plainText.contains("one step") && !plainText.contains("lecture mode"));
+        delete plain;
+        shell.lecture().setActive(true);
+        auto [lecture, lectureText] = shown();
+        QVERIFY(lecture);
+        QVERIFY2(lectureText.contains("the next equation") && !lectureText.contains("one step"),
+                 qPrintable(lectureText));
+        const QRect screen = w.screen()->availableGeometry();
+        QVERIFY2(lecture->height() <= screen.height() - 40,
+                 qPrintable(QString("%1 of %2").arg(lecture->height()).arg(screen.height())));
+        delete lecture;
+        shell.lecture().setActive(false);
     }
 
     void walkKeepsTheTitleThenTheNewestEquationInSight()

@@ -39,6 +39,8 @@ void WindowShell::decorate()
     QMenu* help = menuNamed(w, "helpMenu");
     w.menuBar()->insertMenu(help ? help->menuAction() : nullptr, language);
     lecture_.attach(&w, w.navigator());
+    w.setLectureKeys(lecture_.active());
+    connect(&lecture_, &LectureMode::activeChanged, &w, &MainWindow::setLectureKeys);
     // After the window's own handler (connected first), which sets the run's colours.
     connect(&w.controller(), &RunController::runReplaced, this, &WindowShell::recolourBalls);
     applyAppearance();
