@@ -1166,14 +1166,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>t (%1)</translation>
     </message>
     <message>
-        <source>Energy per unit mass, all balls (%1)</source>
-        <translation>Alla bollars energi/massa (%1)</translation>
-    </message>
-    <message>
-        <source>Energy, all balls (kg %1)</source>
-        <translation>Energi, alla bollar (kg %1)</translation>
-    </message>
-    <message>
         <source>E</source>
         <translation>E</translation>
     </message>
@@ -1302,16 +1294,8 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Energi per massenhet (%1)</translation>
     </message>
     <message>
-        <source>E/m, all balls (%1)</source>
-        <translation>E/m, alla bollar (%1)</translation>
-    </message>
-    <message>
         <source>E/m (%1)</source>
         <translation>E/m (%1)</translation>
-    </message>
-    <message>
-        <source>E, all balls (kg %1)</source>
-        <translation>E, alla bollar (kg %1)</translation>
     </message>
     <message>
         <source>E (kg %1)</source>
@@ -1356,6 +1340,46 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>balls per %1, net</source>
         <translation>bollar per %1, netto</translation>
+    </message>
+    <message>
+        <source>Energy per unit mass, sum over all balls (%1)</source>
+        <translation>Energi per massenhet, summa över alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>E/m, sum over all balls (%1)</source>
+        <translation>E/m, summa över alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>Σ E/m, all balls (%1)</source>
+        <translation>Σ E/m, alla bollar (%1)</translation>
+    </message>
+    <message>
+        <source>Σ E/m (%1)</source>
+        <translation>Σ E/m (%1)</translation>
+    </message>
+    <message>
+        <source>Energy (kg %1)</source>
+        <translation>Energi (kg %1)</translation>
+    </message>
+    <message>
+        <source>Energy, sum over all balls (kg %1)</source>
+        <translation>Energi, summa över alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>E, sum over all balls (kg %1)</source>
+        <translation>E, summa över alla bollar (kg %1)</translation>
+    </message>
+    <message>
+        <source>Σ E (kg %1)</source>
+        <translation>Σ E (kg %1)</translation>
+    </message>
+    <message>
+        <source>Σ E/m</source>
+        <translation>Σ E/m</translation>
+    </message>
+    <message>
+        <source>Σ E</source>
+        <translation>Σ E</translation>
     </message>
 </context>
 <context>
