@@ -8,6 +8,7 @@
 // without the colour-blind-safe palette, for every chart of every scene, compared and not.
 #include "ui/charts/chart_style.h"
 #include "ui/charts/motion_chart.h"
+#include "ui/panels/transport_bar.h"
 #include "ui/theme/appearance.h"
 #include "ui/theme/theme.h"
 #include "ui/theme/theme_style.h"
@@ -125,6 +126,27 @@ private slots:
                         strongest = c;
                     }
             CHECK_CONTRAST("icon", strongest, button, 3.0);
+        }
+        ab::ui::applyToApplication({Theme::Light, false, 1.0});
+    }
+
+    void transportIconsFollowAThemeSetAfterTheBarWasBuilt()
+    {
+        // The window's bar is built before the theme's style is set: Step and Reset kept the
+        // default style's dark grey icons on the high-contrast black (1.6:1 there).
+        ab::ui::applyToApplication({Theme::Light, false, 1.0});
+        QApplication::setStyle(QStringLiteral("Fusion")); // as before any theme
+        ab::ui::TransportBar bar;
+        ab::ui::applyToApplication({Theme::HighContrastDark, false, 1.0});
+        const QColor button = QApplication::palette().color(QPalette::Button);
+        for (QPushButton* b : {bar.playButton(), bar.stepButton(), bar.resetButton()}) {
+            const QImage image = b->icon().pixmap(32, 32).toImage();
+            double best = 1.0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    if (const QColor c = image.pixelColor(x, y); c.alpha() == 255)
+                        best = std::max(best, ratio(c, button));
+            QVERIFY2(best >= 3.0, qPrintable(QString("%1: %2:1").arg(b->objectName()).arg(best)));
         }
         ab::ui::applyToApplication({Theme::Light, false, 1.0});
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "transport_bar.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -35,10 +36,10 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     row->setContentsMargins(4, 2, 4, 2);
     play_ = new QPushButton;
     play_->setObjectName("playButton");
-    step_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("Step"));
+    step_ = new QPushButton(tr("Step"));
     step_->setObjectName("stepButton");
     step_->setToolTip(tr("One step (Right arrow)"));
-    reset_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Reset"));
+    reset_ = new QPushButton(tr("Reset"));
     reset_->setObjectName("resetButton");
     reset_->setToolTip(tr("Back to the start (R)"));
     for (QPushButton* b : {play_, step_, reset_}) {
@@ -92,9 +93,26 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     setRecorded(0.0, 0.0, QString());
 }
 
+void TransportBar::setIcons()
+{
+    play_->setIcon(style()->standardIcon(playing_ ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    step_->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    reset_->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
+}
+
+void TransportBar::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    // The bar is built before the theme's style is set on the application: Fusion's icons,
+    // dark grey, stayed on Step and Reset (and Play until the first press) on a black theme.
+    if (event->type() == QEvent::StyleChange)
+        setIcons();
+}
+
 void TransportBar::setPlaying(bool playing)
 {
-    play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    playing_ = playing;
+    setIcons();
     play_->setText(playing ? tr("Pause") : tr("Play"));
     play_->setToolTip(tr("Play or pause (Space)"));
 }

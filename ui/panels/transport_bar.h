@@ -53,11 +53,18 @@ signals:
     // The user moved the time slider: a moment to show, or nothing for live.
     void viewTimeChanged(std::optional<double> t);
 
+protected:
+    // A style set after the bar was built (the theme's, with its own media icons): the icons
+    // are taken from it again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    void setIcons();
     void scrubbed(int value);
     void updateLabel();
 
     QPushButton* play_;
+    bool playing_ = false;
     QPushButton* step_;
     QPushButton* reset_;
     QSlider* speed_;
