@@ -130,6 +130,34 @@ private slots:
         ab::ui::applyToApplication({Theme::Light, false, 1.0});
     }
 
+    void theStreetsSpeedLinesStayApart_data() { addThemeRows(); }
+    void theStreetsSpeedLinesStayApart()
+    {
+        // The percentiles and the fastest ball, told apart by colour as well as dashes: three
+        // deepening blues met on the high-contrast white (the 10th percentile's light blue
+        // darkened to #307dab beside the median's #2171b5) and were all lifted towards one
+        // bright blue on the black.
+        QFETCH(Theme, theme);
+        ab::ui::MotionChart chart(ab::ui::ChartKind::Speeds);
+        ab::ui::ChartUnits units;
+        units.streetBlocks = 3;
+        chart.configure(ab::sceneInfo(ab::SceneId::Street), 0, units);
+        ab::ui::applyToChart(&chart, {theme, false, 1.0});
+        std::vector<QColor> colours;
+        for (int i = 0; i < 4; ++i)
+            colours.push_back(chart.line(i)->pen().color());
+        for (std::size_t i = 0; i < colours.size(); ++i)
+            for (std::size_t j = i + 1; j < colours.size(); ++j) {
+                const double d =
+                    std::hypot(colours[i].red() - colours[j].red(), colours[i].green() - colours[j].green(),
+                               colours[i].blue() - colours[j].blue());
+                QVERIFY2(
+                    d >= 60.0,
+                    qPrintable(
+                        QString("lines %1 and %2: %3 and %4").arg(i).arg(j).arg(colours[i].name(), colours[j].name())));
+            }
+    }
+
     void transportIconsFollowAThemeSetAfterTheBarWasBuilt()
     {
         // The window's bar is built before the theme's style is set: Step and Reset kept the

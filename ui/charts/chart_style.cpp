@@ -17,11 +17,12 @@ const QColor axisColours[3] = {QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c
 const QColor energyColours[6] = {QColor(0xe6, 0x7e, 0x22), QColor(0x16, 0xa0, 0x85), QColor(0x8e, 0x44, 0xad),
                                  QColor(0x8c, 0x56, 0x4b), QColor(0xc0, 0x39, 0x2b), QColor(0x5d, 0x6d, 0x7e)};
 const QColor activityColours[2] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28)};
-// The street's: one hue per block's foot, down the hill; the speed percentiles in deepening
-// blues, the fastest ball in red.
+// The street's: one hue per block's foot, down the hill; the speed percentiles in green, blue
+// and violet, the fastest ball in red (three deepening blues were lifted to one bright blue
+// on a dark plot, and darkened to one on the high-contrast white).
 const QColor footColours[5] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x2c, 0xa0, 0x2c),
                                QColor(0x94, 0x67, 0xbd), QColor(0xd6, 0x27, 0x28)};
-const QColor speedColours[4] = {QColor(0x6b, 0xae, 0xd6), QColor(0x21, 0x71, 0xb5), QColor(0x08, 0x30, 0x6b),
+const QColor speedColours[4] = {QColor(0x1b, 0x9e, 0x77), QColor(0x21, 0x71, 0xb5), QColor(0x6a, 0x3d, 0x9a),
                                 QColor(0xd6, 0x27, 0x28)};
 // The comparison's family: each colour mixed half and half with a dark violet, so that
 // its lines are darker and of another hue than the run's they lie on.
