@@ -27,6 +27,7 @@
 #include <QMenuBar>
 #include <QRegularExpression>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QXmlStreamReader>
 #include <QtTest>
 
@@ -367,6 +368,29 @@ private slots:
         QVERIFY(shell.window().windowTitle().startsWith(QStringLiteral("Amazeballs - etapp 2")));
         shell.setLanguage(Language::English);
         QVERIFY(shell.window().windowTitle().startsWith(QStringLiteral("Amazeballs - stage 2")));
+    }
+
+    void switchingLanguageKeepsTheLecturesPlace()
+    {
+        // Two equations into the walk, on the second page of charts: the Swedish window goes on
+        // there (it opened the walk at no equation and the charts at their first page).
+        ab::ui::WindowShell shell;
+        shell.window().resize(1280, 720);
+        shell.window().showScene(SceneId::Street);
+        shell.lecture().setActive(true);
+        shell.lecture().next();
+        shell.lecture().next();
+        QCOMPARE(shell.window().navigator()->revealed(), 2);
+        QTabBar* pages = shell.window().charts()->pages();
+        QTRY_VERIFY(pages->count() >= 2);
+        pages->setCurrentIndex(1);
+        shell.setLanguage(Language::Swedish);
+        QCOMPARE(shell.window().scene(), SceneId::Street);
+        QCOMPARE(shell.window().navigator()->revealed(), 2);
+        QTRY_VERIFY(shell.window().charts()->pages()->count() >= 2);
+        QCOMPARE(shell.window().charts()->pages()->currentIndex(), 1);
+        shell.lecture().setActive(false);
+        shell.setLanguage(Language::English);
     }
 };
 

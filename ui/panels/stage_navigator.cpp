@@ -154,6 +154,14 @@ int StageNavigator::revealed() const
     return walking_ ? revealed_ : equationCount();
 }
 
+void StageNavigator::setRevealed(int count)
+{
+    if (!walking_)
+        return;
+    revealed_ = std::clamp(count, 0, equationCount());
+    showText();
+}
+
 int StageNavigator::equationCount() const
 {
     return static_cast<int>(sceneInfo(current_).equations.size());

@@ -47,7 +47,10 @@ public:
 
     void setWalking(bool on);
     bool walking() const { return walking_; }
-    int revealed() const;      // equations shown
+    int revealed() const; // equations shown
+    // In the walk, shows the first `count` equations (clamped to the stage's), as that many
+    // steps forward from the start would: the walk goes on where a rebuilt window left it.
+    void setRevealed(int count);
     int equationCount() const; // of the current stage
 
 signals:

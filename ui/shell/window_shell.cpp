@@ -2,11 +2,13 @@
 #include "window_shell.h"
 
 #include "ui/main_window.h"
+#include "ui/panels/chart_panel.h"
 #include "ui/panels/stage_navigator.h"
 #include "ui/view/ball_view.h"
 
 #include <QActionGroup>
 #include <QMenuBar>
+#include <QTabBar>
 
 namespace ab::ui {
 
@@ -144,13 +146,18 @@ void WindowShell::setLanguage(Language language)
     w.takeRunOf(*old); // the run goes on: its time, recording, selection, camera and comparison
     w.setGeometry(old->geometry());
     const bool full = old->isFullScreen(), visible = old->isVisible();
+    // The lecture's place: the equations shown so far and the page of charts.
+    const int revealed = old->navigator()->revealed(), page = old->charts()->pages()->currentIndex();
     old->hide();
     old.reset();
     decorate();
+    w.navigator()->setRevealed(revealed);
     if (full)
         w.showFullScreen();
     else if (visible)
         w.show();
+    if (page >= 0 && page < w.charts()->pages()->count())
+        w.charts()->pages()->setCurrentIndex(page);
     emit windowReplaced(&w);
 }
 
