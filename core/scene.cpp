@@ -134,7 +134,7 @@ constexpr std::array<std::pair<Integrator, std::string_view>, 7> integratorTitle
     {Integrator::SymplecticEuler, "Symplectic Euler"},
     {Integrator::Verlet, "Velocity Verlet"},
     {Integrator::Rk4, "Runge-Kutta 4"},
-    {Integrator::Event, "Event-driven (exact)"},
+    {Integrator::Event, "Event-driven, exact"},
     {Integrator::ImplicitEuler, "Implicit Euler"},
     {Integrator::ImplicitMidpoint, "Implicit midpoint"},
 }};

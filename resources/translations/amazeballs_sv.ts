@@ -2432,8 +2432,8 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Varje boll rör sig enligt reglerna i etapp 2 (propagation). propagation arbetar på en kopia, så till skillnad från etapp 2 behåller det inspelade kontakttillståndet sin obegränsade koordinat.</translation>
     </message>
     <message>
-        <source>Event-driven (exact)</source>
-        <translation>Händelsestyrd (exakt)</translation>
+        <source>Event-driven, exact</source>
+        <translation>Händelsestyrd, exakt</translation>
     </message>
     <message>
         <source>Every contact adds one to a counter; once it exceeds max_bounces the state the step started from and every later state are set to zero.</source>

@@ -41,7 +41,7 @@ const char* const listed[] = {
                 "their stiffness the contact time t_c, and a stiff spring makes the ODE stiff."),
     QT_TRANSLATE_NOOP("core", "Each ball moves with the stage-2 rules (propagation). propagation works on a copy, so "
                               "unlike stage 2 the recorded contact state keeps its unclamped coordinate."),
-    QT_TRANSLATE_NOOP("core", "Event-driven (exact)"),
+    QT_TRANSLATE_NOOP("core", "Event-driven, exact"),
     QT_TRANSLATE_NOOP("core", "Every contact adds one to a counter; once it exceeds max_bounces the state the step "
                               "started from and every later state are set to zero."),
     QT_TRANSLATE_NOOP("core", "Explicit Euler"),
