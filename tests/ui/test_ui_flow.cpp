@@ -392,6 +392,26 @@ private slots:
         QVERIFY(fitsWhole());
     }
 
+    void theReportsOwnEnergyGainIsNamedAsItsRuleNotAsAFault()
+    {
+        // Stage 1's default run: the report's explicit Euler (eq 2.16) adds g^2 dt^2 / 2 of
+        // energy a step of flight from the first step. In lecture mode at 1280x720 the bar has
+        // room for the kind of message only: the report's rules, not a health check's warning.
+        ab::ui::WindowShell shell;
+        MainWindow& w = shell.window();
+        w.showScene(SceneId::Bounce1d);
+        QVERIFY(stepOn(w, 20));
+        w.resize(1280, 720);
+        w.show();
+        shell.lecture().setActive(true);
+        w.transport()->goLive();
+        QTRY_VERIFY2(w.readout()->warningText().contains("explicit Euler"), qPrintable(w.readout()->warningText()));
+        auto* label = w.findChild<QLabel*>("statusWarning");
+        QVERIFY(label);
+        QTRY_COMPARE(label->text(), QString("The report's rules at work"));
+        shell.lecture().setActive(false);
+    }
+
     void aLanguageSwitchKeepsTheRun()
     {
         ab::ui::WindowShell shell;

@@ -249,8 +249,13 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
     }
     if (const auto rules = reportRulesAt(s, shown, back))
         return {rules->section(QStringLiteral(": "), 0, 0), *rules, Tone::Notice, tr("The report's rules at work")};
+    // A finding the report's own rule explains (stage 1's explicit Euler adds energy from its
+    // first step) is the model at work, not a fault: a class's first run said "A health check
+    // warning" where the headline did not fit.
     if (finding)
-        return {found.headline(), found.full(), Tone::Notice, tr("A health check warning")};
+        return {found.headline(), found.full(), Tone::Notice,
+                s.worst.finding.rule != diagnostics::ReportRule::None ? tr("The report's rules at work")
+                                                                      : tr("A health check warning")};
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
         return {text, text, Tone::Plain, tr("The run is complete")};
