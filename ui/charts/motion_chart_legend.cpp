@@ -79,8 +79,8 @@ void MotionChart::placeLegend()
     const double h = legend_->layout(width);
     const double gap = look_.figure ? look_.px(3.0) : 3.0;
     const int edge = look_.figure ? int(look_.px(3.0)) : 4;
-    setMargins(QMargins(edge + insetLeft_, edge, edge + (look_.figure ? 0 : 4) + insetRight_,
-                        int(std::ceil(h + 2.0 * gap))));
+    setMargins(
+        QMargins(edge + insetLeft_, edge, edge + (look_.figure ? 0 : 4) + insetRight_, int(std::ceil(h + 2.0 * gap))));
     legend_->setPos(side, size().height() - h - gap);
 }
 

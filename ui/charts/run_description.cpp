@@ -58,9 +58,10 @@ QString RunDescription::caption(const RunFacts& run, const RunFacts* comparison,
     if (spec.model == ModelKind::Report)
         scheme += tr(", report model (the report's own step and impact rules)");
     else
-        scheme += tr(", physical model, integrator %1, impacts %2")
-                      .arg(coreText(integratorTitle(spec.integrator)),
-                           spec.impacts == ImpactMode::StepEnd ? tr("at the step's end") : tr("located inside the step"));
+        scheme +=
+            tr(", physical model, integrator %1, impacts %2")
+                .arg(coreText(integratorTitle(spec.integrator)),
+                     spec.impacts == ImpactMode::StepEnd ? tr("at the step's end") : tr("located inside the step"));
     scheme += tr(", dt = %1 %2").arg(qs(formatStep(run.dt)), coreText(info.timeUnit));
     parts << scheme;
     QStringList changed;
