@@ -9,6 +9,7 @@
 #include "ui/charts/scene_layout.h"
 #include "ui/sim/recording.h"
 #include "ui/sim/run_engine.h"
+#include "ui/view/scene_geometry.h"
 
 #include <QtTest>
 
@@ -120,6 +121,25 @@ private slots:
         // Thrown up at 10 from 500 under g = 2: the top is 500 + 10^2 / (2 * 2) = 525.
         QCOMPARE(ab::ui::layoutFor(drop).region.max().y(), 525.0);
         QCOMPARE(ab::ui::layoutFor(drop).axes, 1);
+    }
+
+    // Stages 1 and 2 model the ball as a point that meets the floor at y = 0, but draw it
+    // as a sphere: the floor is drawn one drawn radius lower, so the ball at rest touches it
+    // with its underside instead of sitting half sunk in it. The drawn floor's triangles
+    // all lie at y = -R; stage 4's balls have a contact radius and their floor is the box's.
+    void aPointBallAtRestIsDrawnStandingOnTheFloor()
+    {
+        for (ab::SceneId id : {ab::SceneId::Bounce1d, ab::SceneId::Box3d}) {
+            const ab::ui::SceneLayout l = ab::ui::layoutFor(ab::RunSpec(id));
+            QVERIFY(l.ballRadius > 0.0);
+            QCOMPARE(l.drawnInset, l.ballRadius);
+            const ab::ui::SceneGeometry g = ab::ui::buildSceneGeometry(l, "m");
+            QVERIFY(!g.floor.empty());
+            for (const ab::ui::FlatVertex& v : g.floor)
+                QCOMPARE(v.y, float(l.floorY - l.ballRadius));
+        }
+        const ab::ui::SceneLayout box = ab::ui::layoutFor(ab::RunSpec(ab::SceneId::ManyBalls));
+        QCOMPARE(box.drawnInset, 0.0);
     }
 
     void recordingKeepsFramesWithinItsBudgetAndFindsThemByTime()

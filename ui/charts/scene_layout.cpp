@@ -24,7 +24,8 @@ SceneLayout bounce1dLayout(const ParamValues& v)
     top = std::max(top, 1.0);
     const double half = 0.2 * top;
     l.region = Eigen::AlignedBox3d(Eigen::Vector3d(-half, 0.0, -half), Eigen::Vector3d(half, top, half));
-    l.ballRadius = top / 60.0; // a point for contact; drawn at a readable size
+    l.ballRadius = top / 60.0;   // a point for contact; drawn at a readable size
+    l.drawnInset = l.ballRadius; // the floor drawn a radius down: the ball at y = 0 rests on it
     return l;
 }
 

@@ -21,7 +21,7 @@ struct SceneLayout {
     bool walls = true;          // five faces of a box at region's x and z limits
     double gravity = 0.0;       // magnitude, down is -y
     double ballRadius = 1.0;    // drawn radius in length units (contact radius where the model has one)
-    // Where the ball is a point for contact (stage 2): the floor and walls are drawn this
+    // Where the ball is a point for contact (stages 1 and 2): the floor and walls are drawn this
     // far beyond the faces its centre meets, so that the drawn ball touches them with its
     // surface (rests on the floor, rolls on it) instead of sinking half into them. 0
     // where the balls have a contact radius.
