@@ -2007,10 +2007,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>%1 per steg</translation>
     </message>
     <message>
-        <source>%1 balls on the street, %2 past the first block&apos;s foot, %3 left at the foot; fastest %4 m/s</source>
-        <translation>%1 bollar på gatan, %2 förbi första kvarterets fot, %3 har lämnat vid foten; snabbast %4 m/s</translation>
-    </message>
-    <message>
         <source>Balls on the street</source>
         <translation>Bollar på gatan</translation>
     </message>
@@ -2025,14 +2021,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>E = %1 kg %2</source>
         <translation>E = %1 kg %2</translation>
-    </message>
-    <message>
-        <source>%1 on the street, %2 left at the foot; fastest %3 m/s</source>
-        <translation>%1 på gatan, %2 har lämnat vid foten; snabbast %3 m/s</translation>
-    </message>
-    <message>
-        <source>%1 left at the foot; fastest %2 m/s</source>
-        <translation>%1 har lämnat vid foten; snabbast %2 m/s</translation>
     </message>
     <message>
         <source>fastest %1 m/s</source>
@@ -2056,6 +2044,62 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
             <numerusform>%n bild/s</numerusform>
             <numerusform>%n bilder/s</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The ball has left at the foot</source>
+        <translation>Bollen har lämnat vid foten</translation>
+    </message>
+    <message>
+        <source>The ball is past the first block&apos;s foot at %1 m/s</source>
+        <translation>Bollen är förbi första kvarterets fot i %1 m/s</translation>
+    </message>
+    <message>
+        <source>The ball is on the first block at %1 m/s</source>
+        <translation>Bollen är på första kvarteret i %1 m/s</translation>
+    </message>
+    <message>
+        <source>The ball on the street</source>
+        <translation>Bollen på gatan</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>%1 balls on the street, %2 past the first block&apos;s foot, %3 out at the foot; fastest %4 m/s</source>
+        <translation>%1 bollar på gatan, %2 förbi första kvarterets fot, %3 ute vid foten; snabbast %4 m/s</translation>
+    </message>
+    <message>
+        <source>%1 on the street, %2 out at the foot; fastest %3 m/s</source>
+        <translation>%1 på gatan, %2 ute vid foten; snabbast %3 m/s</translation>
+    </message>
+    <message>
+        <source>%1 out at the foot; fastest %2 m/s</source>
+        <translation>%1 ute vid foten; snabbast %2 m/s</translation>
+    </message>
+    <message>
+        <source>The ball has left at the foot at t = %1 s; the run ends there, and Play starts it again</source>
+        <translation>Bollen har lämnat vid foten vid t = %1 s; körningen slutar där, och Spela startar den igen</translation>
+    </message>
+    <message>
+        <source>All %1 balls have left at the foot by t = %2 s; the run ends there, and Play starts it again</source>
+        <translation>Alla %1 bollar har lämnat vid foten vid t = %2 s; körningen slutar där, och Spela startar den igen</translation>
+    </message>
+    <message>
+        <source>The ball has left at t = %1 s; the run is complete</source>
+        <translation>Bollen har lämnat vid t = %1 s; körningen är klar</translation>
+    </message>
+    <message>
+        <source>All %1 balls have left by t = %2 s; the run is complete</source>
+        <translation>Alla %1 bollar har lämnat vid t = %2 s; körningen är klar</translation>
+    </message>
+    <message>
+        <source>The ball has left at t = %1 s</source>
+        <translation>Bollen har lämnat vid t = %1 s</translation>
+    </message>
+    <message>
+        <source>All have left by t = %1 s</source>
+        <translation>Alla har lämnat vid t = %1 s</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,8 @@
 #include "ui/panels/transport_bar.h"
 #include "ui/sim/run_engine.h"
 
+#include "core/street/street_census.h"
+
 #include "tests/support/sim_helpers.h"
 #include "tests/support/window_helpers.h"
 
@@ -163,6 +165,43 @@ private slots:
         engine.play(1e6);
         QTRY_VERIFY(engine.status().finished);
         expectTrackIsAFreshRun(engine, spec, 30);
+    }
+
+    void aStreetRunEndsAtTheStepItsLastBallLeaves()
+    {
+        // Twenty balls down one short block (10 m at 30 deg): all have passed the open foot
+        // within about 2.5 s of the 10 s planned. The run ends at the first step whose state
+        // has every centre beyond the foot (found here from a fresh run, ball by ball), not
+        // 7 s of an empty street later; going back before it plays to the same end.
+        const ab::RunSpec spec =
+            testing::spec(SceneId::Street, {"n=20", "blocks=1", "block_length=10", "crossing=2", "slope=30"},
+                          ab::ModelKind::Physical);
+        constexpr long long planned = 600;
+        const std::vector<ab::State> fresh = testing::record(spec, planned);
+        const auto street = ab::street::Layout::fromParams(spec.params);
+        long long emptied = -1;
+        for (std::size_t k = 0; k < fresh.size() && emptied < 0; ++k) {
+            bool all = true;
+            for (int i = 0; i < fresh[k].size(); ++i)
+                all = all && ab::street::hasLeft(street, fresh[k].p(0, i));
+            emptied = all ? static_cast<long long>(k) : -1;
+        }
+        QVERIFY2(emptied > 60 && emptied < planned / 2, qPrintable(QString::number(emptied)));
+        RunEngine engine(ab::makeSimulation(spec), planned, 0);
+        QVERIFY(!engine.status().emptiedAt);
+        engine.play(1e6);
+        QTRY_VERIFY_WITH_TIMEOUT(engine.status().finished, 30000);
+        QCOMPARE(engine.status().steps, emptied);
+        QVERIFY(engine.status().emptiedAt && *engine.status().emptiedAt == fresh[std::size_t(emptied)].t);
+        QVERIFY(engine.status().warning.empty());
+        engine.resumeFrom(emptied - 5);
+        QTRY_COMPARE(engine.status().steps, emptied - 5);
+        QVERIFY(!engine.status().finished && !engine.status().emptiedAt);
+        engine.play(1e6);
+        QTRY_VERIFY(engine.status().finished);
+        QCOMPARE(engine.status().steps, emptied);
+        QVERIFY(engine.status().emptiedAt && *engine.status().emptiedAt == fresh[std::size_t(emptied)].t);
+        expectTrackIsAFreshRun(engine, spec, emptied); // the empty street's state is recorded as the last
     }
 
     void theWindowsStreetOnThreeThreadsIsTheOneThreadRunBitForBit()

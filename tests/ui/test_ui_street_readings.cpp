@@ -103,9 +103,9 @@ private slots:
         auto* label = bar.findChild<QLabel*>("statusWarning");
         QVERIFY(label);
         const QString whole =
-            "4 balls on the street, 2 past the first block's foot, 1 left at the foot; fastest 4.0 m/s";
-        const QStringList forms = {whole, "4 on the street, 1 left at the foot; fastest 4.0 m/s",
-                                   "1 left at the foot; fastest 4.0 m/s", "fastest 4.0 m/s"};
+            "4 balls on the street, 2 past the first block's foot, 1 out at the foot; fastest 4.0 m/s";
+        const QStringList forms = {whole, "4 on the street, 1 out at the foot; fastest 4.0 m/s",
+                                   "1 out at the foot; fastest 4.0 m/s", "fastest 4.0 m/s"};
         bar.show();
         QSet<QString> seen;
         for (const int width : {2400, 1300, 1150, 1050, 950, 850, 700}) {
@@ -145,12 +145,48 @@ private slots:
         const Frame next = makeFrame(1, later, ConservationSample{});
         readout.show(EngineStatus{}, &next);
         QCOMPARE(popup->text(),
-                 QString("3 balls on the street, 3 past the first block's foot, 2 left at the foot; fastest 7.0 m/s"));
+                 QString("3 balls on the street, 3 past the first block's foot, 2 out at the foot; fastest 7.0 m/s"));
         // All gone: no fastest ball on an empty street (it said "fastest 0.0 m/s").
         const State gone = stateAt(s, std::vector<double>(5, s.xFoot + 1.0), std::vector<double>(5, 0.0), 30.0);
         const Frame end = makeFrame(2, gone, ConservationSample{});
         readout.show(EngineStatus{}, &end);
         QCOMPARE(readout.warningText(), QString("All 5 balls have left at the foot"));
+        // The run ended there (RunEngine: the step its last ball left): it says so and when.
+        EngineStatus done;
+        done.finished = true;
+        done.t = 29.5;
+        done.emptiedAt = 29.5;
+        readout.show(done, &end);
+        QCOMPARE(readout.warningText(),
+                 QString("All 5 balls have left at the foot by t = 29.50 s; the run ends there, and Play starts it "
+                         "again"));
+    }
+
+    void oneBallsCensusSaysWhereItIsInTheSingular()
+    {
+        // The one-ball preset's bar: "1 balls on the street, 0 past ..." read as a fault.
+        const street::Layout s = defaultStreet();
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        readout.setRun(streetSpec(1));
+        bar.resize(2400, bar.sizeHint().height());
+        bar.show();
+        const Frame onBlock = makeFrame(0, stateAt(s, {10.0}, {3.0}, 0.0), ConservationSample{});
+        readout.show(EngineStatus{}, &onBlock);
+        QCOMPARE(readout.warningText(), QString("The ball is on the first block at 3.0 m/s"));
+        const Frame past = makeFrame(1, stateAt(s, {s.blockFootX[0] + 1.0}, {12.0}, 9.0), ConservationSample{});
+        readout.show(EngineStatus{}, &past);
+        QCOMPARE(readout.warningText(), QString("The ball is past the first block's foot at 12.0 m/s"));
+        const Frame gone = makeFrame(2, stateAt(s, {s.xFoot + 0.5}, {0.0}, 12.0), ConservationSample{});
+        readout.show(EngineStatus{}, &gone);
+        QCOMPARE(readout.warningText(), QString("The ball has left at the foot"));
+        EngineStatus done;
+        done.finished = true;
+        done.t = 12.0;
+        done.emptiedAt = 12.0;
+        readout.show(done, &gone);
+        QCOMPARE(readout.warningText(),
+                 QString("The ball has left at the foot at t = 12.00 s; the run ends there, and Play starts it again"));
     }
 
     void aBallsOwnLinesEndWhereItLeavesAtTheFoot()

@@ -132,20 +132,26 @@ StatusReadout::Message StatusReadout::streetCensus(const Frame& shown) const
             fastest = std::max(fastest, std::hypot(double(shown.v[k]), double(shown.v[k + 1]), double(shown.v[k + 2])));
     }
     if (left == shown.balls()) { // none on the street: no fastest ball to name
-        const QString gone = tr("All %1 balls have left at the foot").arg(left);
+        const QString gone =
+            left == 1 ? tr("The ball has left at the foot") : tr("All %1 balls have left at the foot").arg(left);
         return {gone, gone, Tone::Plain, tr("Balls on the street"), {tr("All have left at the foot")}};
     }
     const QString speed = QString::number(fastest, 'f', 1);
+    if (shown.balls() == 1) { // one ball (the one-ball preset): where it is and how fast
+        const QString text = firstFoot > 0 ? tr("The ball is past the first block's foot at %1 m/s").arg(speed)
+                                           : tr("The ball is on the first block at %1 m/s").arg(speed);
+        return {text, text, Tone::Plain, tr("The ball on the street"), {tr("%1 m/s").arg(speed)}};
+    }
     const QString text =
-        tr("%1 balls on the street, %2 past the first block's foot, %3 left at the foot; fastest %4 m/s")
+        tr("%1 balls on the street, %2 past the first block's foot, %3 out at the foot; fastest %4 m/s")
             .arg(shown.balls() - left)
             .arg(firstFoot)
             .arg(left)
             .arg(speed);
     // A lecture hall's bar holds a few words: the balls gone and the fastest say most.
     const QStringList shorter = {
-        tr("%1 on the street, %2 left at the foot; fastest %3 m/s").arg(shown.balls() - left).arg(left).arg(speed),
-        tr("%1 left at the foot; fastest %2 m/s").arg(left).arg(speed), tr("fastest %1 m/s").arg(speed)};
+        tr("%1 on the street, %2 out at the foot; fastest %3 m/s").arg(shown.balls() - left).arg(left).arg(speed),
+        tr("%1 out at the foot; fastest %2 m/s").arg(left).arg(speed), tr("fastest %1 m/s").arg(speed)};
     return {text, text, Tone::Plain, tr("Balls on the street"), shorter};
 }
 
@@ -256,6 +262,23 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
         return {found.headline(), found.full(), Tone::Notice,
                 s.worst.finding.rule != diagnostics::ReportRule::None ? tr("The report's rules at work")
                                                                       : tr("A health check warning")};
+    if (s.finished && !back && s.emptiedAt && shown) {
+        // The street's run ends when its last ball has left: the rest would be an empty street.
+        const QString at = QString::number(*s.emptiedAt, 'f', 2);
+        const bool one = shown->balls() == 1;
+        const QString text =
+            one ? tr("The ball has left at the foot at t = %1 s; the run ends there, and Play starts it again").arg(at)
+                : tr("All %1 balls have left at the foot by t = %2 s; the run ends there, and Play starts it again")
+                      .arg(shown->balls())
+                      .arg(at);
+        return {text,
+                text,
+                Tone::Plain,
+                tr("The run is complete"),
+                {one ? tr("The ball has left at t = %1 s; the run is complete").arg(at)
+                     : tr("All %1 balls have left by t = %2 s; the run is complete").arg(shown->balls()).arg(at),
+                 one ? tr("The ball has left at t = %1 s").arg(at) : tr("All have left by t = %1 s").arg(at)}};
+    }
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
         return {text, text, Tone::Plain, tr("The run is complete")};

@@ -2,6 +2,7 @@
 #include "run_engine.h"
 
 #include "core/params.h"
+#include "core/street/street_census.h"
 
 #include <algorithm>
 
@@ -264,10 +265,23 @@ void RunEngine::takeStep(std::unique_lock<std::mutex>& lock)
         pendingSteps_ = 0;
     }
     ++status_.version;
-    if (status_.steps >= maxSteps_) {
+    const bool emptied = streetEmpty();
+    if (emptied)
+        status_.emptiedAt = state_.t;
+    if (status_.steps >= maxSteps_ || emptied) {
         recording_.add(status_.steps, state_); // the last state, as runRecorded records it
         finish({});
     }
+}
+
+bool RunEngine::streetEmpty() const
+{
+    if (!layout_.street)
+        return false;
+    for (int i = 0; i < state_.size(); ++i)
+        if (!street::hasLeft(*layout_.street, state_.p(0, i)))
+            return false;
+    return true;
 }
 
 bool RunEngine::checkHealth()
@@ -378,11 +392,14 @@ void RunEngine::fork(std::unique_lock<std::mutex>& lock)
     failuresSeen_ = failures;
     recording_.truncateFrom(target);
     status_.steps = target;
-    status_.finished = target >= maxSteps_;
     status_.pausedOnHealth = false; // playing stays as resumeFrom and any later play() left it
     status_.warning.clear();
     status_.notice.clear();
     status_.haltedAt.reset();
+    status_.emptiedAt.reset();
+    if (streetEmpty())
+        status_.emptiedAt = state_.t;
+    status_.finished = target >= maxSteps_ || status_.emptiedAt;
     issuesPublished_ = kNoneYet; // the re-taken steps' findings are published anew
     publishHealth();
     publishCurrent();

@@ -20,6 +20,8 @@
 //    doubles whenever they would pass a byte budget, and rebuilds the state of any step
 //    by re-taking the steps from the keyframe before it: the rules are deterministic, so
 //    the forked run is the one a fresh run would have taken to that step, bit for bit.
+//    A street run ends at the step its last ball left at the open foot (emptiedAt): what
+//    follows would show an empty street.
 // 6. A comparison run follows another instead of the clock (follow): it steps, unpaced,
 //    while its next state's time is not past the other run's, so both show one moment.
 #pragma once
@@ -55,8 +57,9 @@ struct EngineStatus {
     std::string healthLine;                               // that finding: what happened, what to change
     diagnostics::HealthStatus worst;                      // the same as data (the window words it)
     std::optional<double> haltedAt;                       // when the report's counter stopped the motion (the notice)
-    bool pausedOnHealth = false;    // the last pause was the health check's (cleared by play or a step)
-    unsigned long long version = 0; // changes whenever the snapshot does
+    std::optional<double> emptiedAt; // the street's last ball left at its open foot then: the run ended there
+    bool pausedOnHealth = false;     // the last pause was the health check's (cleared by play or a step)
+    unsigned long long version = 0;  // changes whenever the snapshot does
 };
 
 class RunEngine {
@@ -117,6 +120,8 @@ private:
     // Failures among the health check's findings (0 without a check).
     std::size_t failuresFound() const;
     void finish(std::string warning);
+    // The street's balls have all left at its open foot (false in the other stages).
+    bool streetEmpty() const;
 
     std::unique_ptr<Simulation> sim_;
     const long long maxSteps_;
