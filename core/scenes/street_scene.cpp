@@ -87,8 +87,8 @@ SceneInfo makeStreet()
             refuse(refusal::carsTooWide, {formatNumber(v.real("width"))});
     };
     s.equations = {
-        {"St1", "a = g sin(theta) / (1 + q),  r w = v", "a ball rolling without slipping down a block"},
-        {"St2", "a = g (sin(theta) - mu cos(theta)),  dw/dt = mu g cos(theta) / (q r)",
+        {"St1", "a = g sin(theta) / (1 + q),  r omega = v", "a ball rolling without slipping down a block"},
+        {"St2", "a = g (sin(theta) - mu cos(theta)),  domega/dt = mu g cos(theta) / (q r)",
          "a ball sliding down a block, its spin growing"},
         {"St3", "mu >= q tan(theta) / (1 + q)", "friction holds a ball set down on a block: it rolls (St1)"},
         {"St4", "p(t) = p0 + v0 t + g t^2 / 2", "a ball that leaves a crossing's edge flies as a projectile"},

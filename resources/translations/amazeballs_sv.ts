@@ -547,8 +547,8 @@
         <translation>glider</translation>
     </message>
     <message>
-        <source>rolling needs mu &gt;= %1; here mu = %2: a ball set down on a block %3</source>
-        <translation>att rulla kräver mu &gt;= %1; här är mu = %2: en boll som sätts ned på ett kvarter %3</translation>
+        <source>rolling needs μ ≥ %1; here μ = %2: a ball set down on a block %3</source>
+        <translation>att rulla kräver μ ≥ %1; här är μ = %2: en boll som sätts ned på ett kvarter %3</translation>
     </message>
     <message>
         <source>rolls</source>
@@ -567,8 +567,8 @@
         <translation>när en boll lämnar en korsning med den farten flyger den %1 s och landar %2 m nedför nästa kvarter</translation>
     </message>
     <message>
-        <source>the street drops %1 m: %2 J per kg, the speed sqrt(2 g H) = %3 m/s if none were lost</source>
-        <translation>gatan faller %1 m: %2 J per kg, farten sqrt(2 g H) = %3 m/s om inget gick förlorat</translation>
+        <source>the street drops %1 m: %2 J per kg, the speed √(2 g H) = %3 m/s if none were lost</source>
+        <translation>gatan faller %1 m: %2 J per kg, farten √(2 g H) = %3 m/s om inget gick förlorat</translation>
     </message>
 </context>
 <context>

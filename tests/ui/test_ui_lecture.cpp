@@ -8,6 +8,7 @@
 #include "ui/charts/motion_chart.h"
 #include "ui/lecture/lecture_mode.h"
 #include "ui/main_window.h"
+#include "ui/panels/equation_rows.h"
 #include "ui/panels/stage_navigator.h"
 #include "ui/shell/window_shell.h"
 #include "ui/theme/theme.h"
@@ -62,7 +63,7 @@ std::vector<bool> shownEquations(const StageNavigator& nav)
     const QString text = nav.text();
     for (const ab::Equation& e : ab::sceneInfo(nav.current()).equations)
         shown.push_back(text.contains(QStringLiteral("(%1)").arg(QString::fromStdString(e.number))) &&
-                        text.contains(QString::fromStdString(e.text)));
+                        text.contains(ab::ui::formulaTypography(QString::fromStdString(e.text))));
     return shown;
 }
 
@@ -104,6 +105,35 @@ ab::ui::MotionChart* positionChart(MainWindow& w)
 class UiLecture : public QObject {
     Q_OBJECT
 private slots:
+    void formulasAreSetWithTheirSymbols()
+    {
+        // The formulas are typed in ASCII (the core's, the street's and the navigator's); the
+        // window sets them as a page prints them, as the spin rows already were ("ω²").
+        using ab::ui::formulaTypography;
+        const QList<QPair<QString, QString>> cases = {
+            {"mu >= q tan(theta) / (1 + q)", "\u03bc \u2265 q tan(\u03b8) / (1 + q)"},
+            {"a = g (sin(theta) - mu cos(theta)),  domega/dt = mu g cos(theta) / (q r)",
+             "a = g (sin(\u03b8) \u2212 \u03bc cos(\u03b8)),  d\u03c9/dt = \u03bc g cos(\u03b8) / (q r)"},
+            {"p(t) = p0 + v0 t + g t^2 / 2", "p(t) = p0 + v0 t + g t\u00b2 / 2"},
+            {"tz = (-(n.x 0.3) - (n.y 0.3)) / n.z", "tz = (\u2212(n.x 0.3) \u2212 (n.y 0.3)) / n.z"},
+            {"v_n' = -e v_n,  Walton's tangential impulse (S9-S10)",
+             "v_n' = \u2212e v_n,  Walton's tangential impulse (S9-S10)"}, // a range keeps its hyphen
+            {"v = sqrt(2 a L)", "v = \u221a(2 a L)"},
+            {"p <= 0 and v != 0 -> v1 = -k v0", "p \u2264 0 and v \u2260 0 \u2192 v1 = \u2212k v0"},
+            {"mu_s, x^23, mutual impulse computed, betas, dmu2",
+             "\u03bc_s, x^23, mutual impulse computed, betas, dmu2"},
+        };
+        for (const auto& [ascii, printed] : cases)
+            QCOMPARE(formulaTypography(ascii), printed);
+        // Every stage's formulas: no Greek name, power or minus left in ASCII.
+        const QRegularExpression ascii(QStringLiteral("\\b(theta|mu|omega|beta)\\b|\\^[23]|(^| )-[ (a-z0-9]|<=|>="));
+        for (const ab::SceneInfo* scene : ab::allScenes())
+            for (const ab::Equation& e : scene->equations) {
+                const QString set = formulaTypography(QString::fromStdString(e.text));
+                QVERIFY2(!ascii.match(set).hasMatch(), qPrintable(set));
+            }
+    }
+
     void aFormulaBreaksOnlyBetweenItsParts()
     {
         // The navigator at lecture size in a narrow column: a formula's line may end after a
@@ -125,8 +155,9 @@ private slots:
                 const QString shown = b.text(),
                               text = QString(shown).replace(QChar(0x00A0), QLatin1Char(' ')).remove(QChar(0x2060));
                 const bool formula =
-                    std::any_of(scene->equations.begin(), scene->equations.end(),
-                                [&](const ab::Equation& e) { return QString::fromStdString(e.text) == text; });
+                    std::any_of(scene->equations.begin(), scene->equations.end(), [&](const ab::Equation& e) {
+                        return ab::ui::formulaTypography(QString::fromStdString(e.text)) == text;
+                    });
                 if (!formula)
                     continue;
                 for (int i = 1; i < b.layout()->lineCount(); ++i) {
@@ -136,7 +167,8 @@ private slots:
                     };
                     const QString before = plain(shown.left(at)), after = plain(shown.mid(at));
                     const bool clean = before.endsWith(',') || after.startsWith("= ") || after.startsWith("+ ") ||
-                                       after.startsWith("- ") || after.startsWith("/ ") || after.startsWith("<") ||
+                                       after.startsWith("- ") || after.startsWith("\u2212 ") ||
+                                       after.startsWith("/ ") || after.startsWith("<") || after.startsWith("\u2264") ||
                                        note.match(after.section(' ', 0, 0)).hasMatch() ||
                                        (prose.match(before.section(' ', -1)).hasMatch() &&
                                         prose.match(after.section(' ', 0, 0)).hasMatch());

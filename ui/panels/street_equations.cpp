@@ -41,7 +41,7 @@ QString StreetEquations::html(const RunSpec& spec)
                        tr("down a block of %1 deg: a = %2 m/s\u00b2 (%3)")
                            .arg(num(v.real("slope")), num(a), rolls ? tr("rolling") : tr("sliding")));
     out += equationRow(QStringLiteral("St3"), QStringLiteral("mu >= q tan(theta) / (1 + q)"),
-                       tr("rolling needs mu >= %1; here mu = %2: a ball set down on a block %3")
+                       tr("rolling needs \u03bc \u2265 %1; here \u03bc = %2: a ball set down on a block %3")
                            .arg(num(needed), num(mu), rolls ? tr("rolls") : tr("slides")));
     // From rest at a block's top, uniform acceleration over its length L: v^2 = 2 a L.
     const double foot = std::sqrt(std::max(2.0 * a * length, 0.0));
@@ -60,7 +60,7 @@ QString StreetEquations::html(const RunSpec& spec)
     // The street's whole drop H = B L sin(theta); g H per unit mass is what gravity gives.
     const double drop = blocks * length * std::sin(theta);
     out += equationRow(QStringLiteral("E"), QStringLiteral("g H = g B L sin(theta)"),
-                       tr("the street drops %1 m: %2 J per kg, the speed sqrt(2 g H) = %3 m/s if none were lost")
+                       tr("the street drops %1 m: %2 J per kg, the speed \u221a(2 g H) = %3 m/s if none were lost")
                            .arg(num(drop), num(g * drop), num(std::sqrt(2.0 * g * drop))));
     out += QStringLiteral("</table><p><i>%1</i></p>").arg(RunOptionsPanel::noReportModelReason().toHtmlEscaped());
     return out;
