@@ -19,12 +19,21 @@ namespace {
 constexpr float triangleCorners[6] = {0.0f, 2.0f, -1.7320508f, -1.0f, 1.7320508f, -1.0f};
 constexpr int cornerCount = 3;
 
-std::unique_ptr<QOpenGLShaderProgram> program(const char* name, QString& error)
+// A corner of the trace's band (resources/shaders/trace.vert): the point it lies at, the
+// other end of its segment, and the edge of the band it is on.
+struct TraceCorner {
+    float x, y, z;
+    float ox, oy, oz;
+    float side;
+};
+
+std::unique_ptr<QOpenGLShaderProgram> program(const char* name, QString& error, const char* fragment = nullptr)
 {
     auto p = std::make_unique<QOpenGLShaderProgram>();
     const QString base = QStringLiteral(":/shaders/%1").arg(QString::fromLatin1(name));
+    const QString frag = fragment ? QStringLiteral(":/shaders/%1").arg(QString::fromLatin1(fragment)) : base;
     if (!p->addShaderFromSourceFile(QOpenGLShader::Vertex, base + ".vert") ||
-        !p->addShaderFromSourceFile(QOpenGLShader::Fragment, base + ".frag") || !p->link()) {
+        !p->addShaderFromSourceFile(QOpenGLShader::Fragment, frag + ".frag") || !p->link()) {
         error = QStringLiteral("shader %1: %2").arg(QString::fromLatin1(name), p->log().trimmed());
         return nullptr;
     }
@@ -70,7 +79,17 @@ bool SceneRenderer::initialize(QString& error)
     setupInstanced(ghostVao_, ghostPositions_, true);
     setupInstanced(shadowVao_, positions_, false);
     setupFlat(flatVao_, flat_);
-    setupFlat(traceVao_, trace_);
+    {
+        QOpenGLVertexArrayObject::Binder bind(&traceVao_);
+        trace_.bind();
+        const auto stride = static_cast<GLsizei>(sizeof(TraceCorner));
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(TraceCorner, ox)));
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(TraceCorner, side)));
+    }
     ready_ = true;
     return true;
 }
@@ -82,7 +101,9 @@ bool SceneRenderer::buildPrograms(QString& error)
         shadowProgram_ = program("shadow", error);
     if (shadowProgram_)
         flatProgram_ = program("flat", error);
-    return flatProgram_ != nullptr;
+    if (flatProgram_)
+        traceProgram_ = program("trace", error, "flat");
+    return traceProgram_ != nullptr;
 }
 
 void SceneRenderer::setupInstanced(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& centres, bool withColours)
@@ -124,6 +145,7 @@ void SceneRenderer::release()
     ballProgram_.reset();
     shadowProgram_.reset();
     flatProgram_.reset();
+    traceProgram_.reset();
 }
 
 void SceneRenderer::setGeometry(const SceneGeometry& g)
@@ -180,13 +202,28 @@ void SceneRenderer::setGhosts(const std::vector<float>& xyz)
 
 void SceneRenderer::setTrace(const std::vector<QVector3D>& points, const QColor& colour)
 {
-    std::vector<FlatVertex> v;
-    v.reserve(points.size());
-    for (const QVector3D& p : points)
-        v.push_back({p.x(), p.y(), p.z(), float(colour.redF()), float(colour.greenF()), float(colour.blueF()), 1.0f});
+    // Two triangles a segment (trace.vert): corners A and C on one edge of the band, B and D
+    // on the other; a corner at the segment's far end sees the segment reversed, so its side
+    // is negated to stay on the same edge.
+    std::vector<TraceCorner> v;
+    v.reserve(points.size() > 1 ? 6 * (points.size() - 1) : 0);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const QVector3D& p = points[i - 1];
+        const QVector3D& q = points[i];
+        if (p == q)
+            continue; // no direction: nothing to draw
+        const TraceCorner a{p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), 1.0f};
+        const TraceCorner b{p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), -1.0f};
+        const TraceCorner c{q.x(), q.y(), q.z(), p.x(), p.y(), p.z(), -1.0f};
+        const TraceCorner d{q.x(), q.y(), q.z(), p.x(), p.y(), p.z(), 1.0f};
+        v.insert(v.end(), {a, c, d, a, d, b});
+    }
+    traceColour_ = colour;
+    // The edge in white beside a dark path, in near-black beside a light one.
+    traceEdge_ = colour.lightnessF() < 0.55 ? QColor(Qt::white) : QColor(0x1a, 0x1a, 0x1a);
     traceVertices_ = static_cast<int>(v.size());
     trace_.bind();
-    trace_.allocate(v.data(), static_cast<int>(v.size() * sizeof(FlatVertex)));
+    trace_.allocate(v.data(), static_cast<int>(v.size() * sizeof(TraceCorner)));
 }
 
 void SceneRenderer::setCommonUniforms(QOpenGLShaderProgram& p, const RenderInputs& in)
@@ -256,10 +293,6 @@ void SceneRenderer::draw(const RenderInputs& in)
 
     flatProgram_->bind();
     flatProgram_->setUniformValue("viewProjection", in.projection * in.view);
-    if (traceVertices_ > 1) {
-        traceVao_.bind();
-        glDrawArrays(GL_LINE_STRIP, 0, traceVertices_);
-    }
     if (wallVertices_ > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -271,6 +304,34 @@ void SceneRenderer::draw(const RenderInputs& in)
     }
     flatVao_.release();
     flatProgram_->release();
+    // After the translucent walls, which write no depth: the path is drawn in its own colours
+    // (a wall's tint would fall on the edge, which writes no depth either, and not the path).
+    drawTrace(in);
+}
+
+void SceneRenderer::drawTrace(const RenderInputs& in)
+{
+    if (traceVertices_ == 0)
+        return;
+    traceProgram_->bind();
+    traceProgram_->setUniformValue("viewProjection", in.projection * in.view);
+    traceProgram_->setUniformValue("viewport", QVector2D(float(in.viewport.width()), float(in.viewport.height())));
+    traceVao_.bind();
+    // The whole edge first, a pixel wider each side, tested against the scene but writing no
+    // depth; then the whole path over it. So no part of the path hides under the edge of
+    // another part nearer the eye (a ball dropping towards the eye draws its path over
+    // itself), and the scene in front still hides both.
+    const auto rgba = [](const QColor& c) { return QVector4D(c.redF(), c.greenF(), c.blueF(), 1.0f); };
+    traceProgram_->setUniformValue("width", in.traceWidth + 2.0f);
+    traceProgram_->setUniformValue("colour", rgba(traceEdge_));
+    glDepthMask(GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, traceVertices_);
+    glDepthMask(GL_TRUE);
+    traceProgram_->setUniformValue("width", in.traceWidth);
+    traceProgram_->setUniformValue("colour", rgba(traceColour_));
+    glDrawArrays(GL_TRIANGLES, 0, traceVertices_);
+    traceVao_.release();
+    traceProgram_->release();
 }
 
 void SceneRenderer::useBallProgram(const RenderInputs& in, int selected, bool ghosts)

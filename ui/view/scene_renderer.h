@@ -38,6 +38,10 @@ struct RenderInputs {
     // Balls whose centres lie beyond this x are not drawn: the street's balls that have left
     // the run at its open foot, parked there by the engine (core/street/street_census.h).
     float hideBeyondX = 3.0e38f;
+    // The selected ball's path: a band this many pixels wide in its colour, with a pixel's
+    // edge each side in a colour of the other lightness (it shows on dark asphalt and on
+    // light concrete alike).
+    float traceWidth = 3.0f;
 };
 
 class SceneRenderer : protected QOpenGLExtraFunctions {
@@ -61,6 +65,7 @@ public:
     void setOrientations(const std::vector<float>& q);
     // The comparison run's ball centres (empty: none), drawn in the balls' colours.
     void setGhosts(const std::vector<float>& xyz);
+    // The selected ball's path through `points`, drawn as a band (RenderInputs::traceWidth).
     void setTrace(const std::vector<QVector3D>& points, const QColor& colour);
     void draw(const RenderInputs& in);
 
@@ -72,9 +77,11 @@ private:
     // The ball program with its uniforms: the solid balls (`selected` ringed) or the ghosts.
     void useBallProgram(const RenderInputs& in, int selected, bool ghosts);
     void drawFlat(const RenderInputs& in);
+    void drawTrace(const RenderInputs& in);
 
     bool ready_ = false;
-    std::unique_ptr<QOpenGLShaderProgram> ballProgram_, shadowProgram_, flatProgram_;
+    std::unique_ptr<QOpenGLShaderProgram> ballProgram_, shadowProgram_, flatProgram_, traceProgram_;
+    QColor traceColour_, traceEdge_;
     QOpenGLVertexArrayObject ballVao_, ghostVao_, shadowVao_, flatVao_, traceVao_;
     QOpenGLBuffer corners_, positions_, ghostPositions_, colours_, orientations_, flat_, trace_;
     int orientationCount_ = 0; // balls with an orientation uploaded

@@ -82,6 +82,7 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
     in.pixelsPerUnit = camera.pixelsPerUnit(size.height());
     in.radius = float(layout.ballRadius);
     in.minPixels = smallestBallPixels(layout, size.height(), scale);
+    in.traceWidth = float(3.0 * scale);                   // larger in lecture mode, as the text
     in.selected = layout.balls > 1 ? selected : -1;       // one ball needs no marking
     in.floorY = float(layout.floorY - layout.drawnInset); // the drawn floor, where the shadows lie
     // A few balls get a cue that darkens as they come down; a crowd (thousands, piling up
