@@ -15,6 +15,8 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
+#include <QRegularExpression>
+
 #include <algorithm>
 
 namespace ab::ui {
@@ -23,7 +25,14 @@ namespace {
 
 QString html(const std::string& s)
 {
-    return coreText(s).toHtmlEscaped();
+    // A quotient in the prose ("dv/dt") and a sign before its term ("= -g") hold together:
+    // Qt would end a line after the solidus or the hyphen-minus.
+    static const QRegularExpression quotient(QStringLiteral("(?<=\\S)/(?=\\S)")),
+        sign(QStringLiteral("(?<=\\s)-(?=[\\w(])"));
+    return coreText(s)
+        .toHtmlEscaped()
+        .replace(quotient, QStringLiteral("/\u2060"))
+        .replace(sign, QStringLiteral("-\u2060"));
 }
 
 // Marks the newest equation of the walk (showText scrolls it into sight).
