@@ -112,7 +112,9 @@ private:
     // The closed form of the selected ball, if the run has one (reference_).
     std::optional<ReferenceMotion> closedFormMotion() const;
     void refresh();
-    void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT);
+    // `pathEnd`: where the selected ball's drawn path ends (SceneLayout::pathEndsAtHalt).
+    void refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT,
+                     std::optional<double> pathEnd);
     ChartUnits chartUnits() const; // of the current run's model
     void exportInteractively(ChartKind kind, ExportFormat format);
     void exportViewInteractively();

@@ -24,7 +24,10 @@ void MainWindow::refresh()
         return;
     const EngineStatus status = controller_.status();
     const std::optional<double> viewT = transport_->viewTime();
-    controller_.engine().read([&](const Recording& rec, const Frame& current) { refreshView(rec, current, viewT); });
+    // Where the report's limit moved the ball to the origin, its path ends at the halt.
+    const std::optional<double> pathEnd = controller_.layout().pathEndsAtHalt ? status.haltedAt : std::nullopt;
+    controller_.engine().read(
+        [&](const Recording& rec, const Frame& current) { refreshView(rec, current, viewT, pathEnd); });
     if (const RunEngine* compare = controller_.comparisonEngine()) {
         compare->read([&](const Recording& rec, const Frame& current) {
             if (view_) { // the comparison at the moment shown: it never runs ahead of the main run
@@ -120,7 +123,8 @@ void MainWindow::refreshReadings(const EngineStatus& status)
     }
 }
 
-void MainWindow::refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT)
+void MainWindow::refreshView(const Recording& rec, const Frame& current, std::optional<double> viewT,
+                             std::optional<double> pathEnd)
 {
     const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
     if (!shown)
@@ -137,7 +141,9 @@ void MainWindow::refreshView(const Recording& rec, const Frame& current, std::op
     // The selected ball's path so far (Figure 2.6), thinned to a drawable number of points.
     const MotionTrack& track = rec.track();
     const double until = viewT.value_or(current.t);
-    const auto end = std::upper_bound(track.t().begin(), track.t().end(), until) - track.t().begin();
+    auto end = std::upper_bound(track.t().begin(), track.t().end(), until) - track.t().begin();
+    if (pathEnd) // the states from the halt on are the zeroed ones
+        end = std::min(end, std::lower_bound(track.t().begin(), track.t().end(), *pathEnd) - track.t().begin());
     const std::size_t n = static_cast<std::size_t>(end);
     const std::size_t stride = std::max<std::size_t>(1, n / maxTracePoints);
     std::vector<QVector3D> trace;

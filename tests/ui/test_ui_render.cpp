@@ -12,6 +12,8 @@
 #include "ui/panels/stage_navigator.h"
 #include "ui/view/ball_view.h"
 
+#include "tests/support/sim_helpers.h"
+
 #include <QApplication>
 #include <QGuiApplication>
 #include <QtTest>
@@ -176,6 +178,33 @@ private slots:
             for (int x = 0; x < image.width(); x += 4)
                 colours.insert(image.pixel(x, y));
         QVERIFY2(colours.size() > 100, qPrintable(QString::number(colours.size())));
+    }
+
+    void theReportsBounceLimitEndsThePathWhereItStoppedTheBall()
+    {
+        // The report's stage 2 stops the ball after its contacts by setting its position to
+        // the origin (Appendix B): the path ends where the ball was, at t = 35.32 s, not in a
+        // straight line across the floor to the corner.
+        MainWindow& w = open(SceneId::Box3d);
+        ab::ui::BallView* view = w.view();
+        QVERIFY(view);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.controller().setSpeed(10.0);
+        w.controller().play();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().status().finished, 30000);
+        w.controller().poll();
+        const std::optional<double> halt = w.controller().status().haltedAt;
+        QVERIFY(halt && *halt > 30.0 && *halt < 40.0);
+        QTRY_VERIFY(!view->trace().empty());
+        const std::vector<ab::State> fresh = testing::record(w.controller().spec(), 6000);
+        const auto last = std::find_if(fresh.begin(), fresh.end(), [&](const ab::State& s) { return s.t >= *halt; });
+        QVERIFY(last != fresh.begin() && last != fresh.end());
+        QCOMPARE(last->p.col(0).norm(), 0.0); // the halted state: at the origin
+        const ab::State& before = *(last - 1);
+        const QVector3D end = view->trace().back();
+        QVERIFY2((end - QVector3D(float(before.p(0, 0)), float(before.p(1, 0)), float(before.p(2, 0)))).length() <
+                     1e-3f,
+                 qPrintable(QString("%1 %2 %3").arg(end.x()).arg(end.y()).arg(end.z())));
     }
 
     void aClickSelectsTheBallUnderIt()

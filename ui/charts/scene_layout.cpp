@@ -83,6 +83,7 @@ SceneLayout layoutFor(const RunSpec& spec)
     case SceneId::Box3d: {
         SceneLayout l = cornerBoxLayout(v, v.real("box") / 80.0, 1); // a point for contact; drawn at 1/80 of the box
         l.drawnInset = l.ballRadius;
+        l.pathEndsAtHalt = spec.model == ModelKind::Report;
         return l;
     }
     case SceneId::TwoBalls:

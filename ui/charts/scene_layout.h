@@ -26,6 +26,10 @@ struct SceneLayout {
     // surface (rests on the floor, rolls on it) instead of sinking half into them. 0
     // where the balls have a contact radius.
     double drawnInset = 0.0;
+    // The report's bounce limit sets the ball's position to zero (Appendices A and B): the
+    // drawn path ends where the ball was when it was stopped, instead of a straight line to
+    // the origin that reads as motion.
+    bool pathEndsAtHalt = false;
     int balls = 1;
     // The street of stage 5 (road blocks, crossings, sidewalks, houses, cars), built once
     // from the parameters; null in the other stages. Its region is the road's extent.

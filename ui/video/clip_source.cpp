@@ -31,7 +31,8 @@ bool finite(const State& s)
 } // namespace
 
 ClipSource::ClipSource(const RunSpec& spec, long long steps, int ball, bool trace)
-    : sim_(makeSimulation(spec)), maxSteps_(steps), ball_(ball), traceOn_(trace)
+    : sim_(makeSimulation(spec)), maxSteps_(steps), ball_(ball), traceOn_(trace),
+      pathEndsAtHalt_(layoutFor(spec).pathEndsAtHalt)
 {
     shown_ = sim_->start();
     orientations_.follow(shown_);
@@ -69,7 +70,7 @@ const std::vector<float>& ClipSource::advanceTo(double t)
         std::swap(shown_, next_);
         haveNext_ = false;
         orientations_.follow(shown_);
-        if (traceOn_ && ball_ < shown_.size() && steps_ % traceStride_ == 0) {
+        if (traceOn_ && ball_ < shown_.size() && steps_ % traceStride_ == 0 && !(pathEndsAtHalt_ && shown_.halted)) {
             trace_.emplace_back(float(shown_.p(0, ball_)), float(shown_.p(1, ball_)), float(shown_.p(2, ball_)));
             if (trace_.size() > kMaxTrace) {
                 std::vector<QVector3D> thinned;

@@ -45,6 +45,7 @@ private:
     long long steps_ = 0;
     int ball_;
     bool traceOn_;
+    bool pathEndsAtHalt_; // SceneLayout::pathEndsAtHalt: the zeroed states add nothing to the path
     State shown_, next_;
     bool haveNext_ = false, ended_ = false;
     std::vector<float> xyz_;

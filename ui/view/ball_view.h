@@ -56,6 +56,7 @@ public:
     QString ghostLegend() const { return ghostLegend_; }
     void setSelected(int ball);
     void setTrace(std::vector<QVector3D> points);
+    const std::vector<QVector3D>& trace() const { return trace_; }
     // The balls' colours (0xRRGGBB, one per ball) and the clear colour, for the window's theme.
     void setColours(std::vector<unsigned> colours);
     void setBackground(const QColor& colour);
