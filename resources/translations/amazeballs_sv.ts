@@ -2094,12 +2094,16 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>Alla %1 bollar har lämnat vid t = %2 s; körningen är klar</translation>
     </message>
     <message>
-        <source>The ball has left at t = %1 s</source>
-        <translation>Bollen har lämnat vid t = %1 s</translation>
+        <source>Run complete: the ball left at t = %1 s</source>
+        <translation>Klar: bollen lämnade vid t = %1 s</translation>
     </message>
     <message>
-        <source>All have left by t = %1 s</source>
-        <translation>Alla har lämnat vid t = %1 s</translation>
+        <source>Run complete: all have left by t = %1 s</source>
+        <translation>Klar: alla har lämnat vid t = %1 s</translation>
+    </message>
+    <message>
+        <source>Run complete at t = %1 s</source>
+        <translation>Klar vid t = %1 s</translation>
     </message>
 </context>
 <context>

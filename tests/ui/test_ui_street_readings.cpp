@@ -160,6 +160,15 @@ private slots:
         QCOMPARE(readout.warningText(),
                  QString("All 5 balls have left at the foot by t = 29.50 s; the run ends there, and Play starts it "
                          "again"));
+        // However narrow the bar (lecture mode's large text at 1280x720), it says the run ended.
+        for (const int width : {900, 600, 420, 330}) {
+            bar.resize(width, bar.sizeHint().height());
+            readout.show(done, &end);
+            QTRY_COMPARE(label->width() > 0, true);
+            QApplication::processEvents();
+            const QString shown = readout.warningShown();
+            QVERIFY2(shown.contains("complete"), qPrintable(QString("%1: %2").arg(width).arg(shown)));
+        }
     }
 
     void oneBallsCensusSaysWhereItIsInTheSingular()

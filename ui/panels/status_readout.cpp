@@ -277,7 +277,10 @@ StatusReadout::Message StatusReadout::messageFor(const EngineStatus& s, const Fr
                 tr("The run is complete"),
                 {one ? tr("The ball has left at t = %1 s; the run is complete").arg(at)
                      : tr("All %1 balls have left by t = %2 s; the run is complete").arg(shown->balls()).arg(at),
-                 one ? tr("The ball has left at t = %1 s").arg(at) : tr("All have left by t = %1 s").arg(at)}};
+                 // Lecture mode's large text at 1280x720 holds only these: they still say the run ended.
+                 one ? tr("Run complete: the ball left at t = %1 s").arg(at)
+                     : tr("Run complete: all have left by t = %1 s").arg(at),
+                 tr("Run complete at t = %1 s").arg(at)}};
     }
     if (s.finished && !back) {
         const QString text = tr("The run is complete; Play starts it again");
