@@ -16,6 +16,7 @@
 #include "ui/panels/street_equations.h"
 #include "ui/view/scene_geometry.h"
 #include "ui/view/street_camera.h"
+#include "ui/view/street_geometry.h"
 
 #include <QApplication>
 #include <QChartView>
@@ -434,7 +435,7 @@ private slots:
             QPointF top2, run, label;
             QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height), 0.0f), size, top2));
             QVERIFY(c.project(QVector3D(float(s.xFoot) + 20.0f, 0.0f, 0.0f), size, run));
-            QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height + 8.0), 0.0f), size, label));
+            QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height + ab::ui::kTopLabelHeight), 0.0f), size, label));
             QVERIFY(onScreen(top2, size) && onScreen(run, size) && onScreen(label, size));
             QVERIFY2(run.x() - top2.x() > 0.75 * size.width(), qPrintable(QString::number(run.x() - top2.x())));
         }

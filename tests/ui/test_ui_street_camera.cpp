@@ -9,6 +9,7 @@
 
 #include "ui/view/orbit_camera.h"
 #include "ui/view/street_camera.h"
+#include "ui/view/street_geometry.h"
 
 #include <QtTest>
 
@@ -235,13 +236,13 @@ private slots:
     {
         const auto s = streetLayout();
         const StreetSolids solids(s);
-        const QVector3D topLabel(float(s->xTop), float(s->height + 8.0), 0.0f); // street_geometry's
+        const QVector3D topLabel(float(s->xTop), float(s->height + ab::ui::kTopLabelHeight), 0.0f);
         QVERIFY(!solids.hides(footShot(*s).eye(), topLabel));
         // Seen from the foot shot, 1.5 m over the flat street 45 m past the foot (x = 302.5), the
         // crest at the top block's upper end (x = 0, 70.2 m up) stands at atan(68.7 / 302.5) =
         // 12.8 deg; the middle of the top crossing, 0.3 m over the road 7 m beyond the crest, at
-        // atan(69.0 / 309.5) = 12.6 deg: behind it. The top's label, 8 m over the crossing's far
-        // end (x = -14), at atan(76.7 / 316.5) = 13.6 deg, is seen.
+        // atan(69.0 / 309.5) = 12.6 deg: behind it. The top's label, 18 m over the crossing's far
+        // end (x = -14), at atan(86.7 / 316.5) = 15.3 deg, is seen.
         const QVector3D onTopCrossing(float(0.5 * s->xTop), float(s->height) + 0.3f, 0.0f);
         QVERIFY(solids.hides(footShot(*s).eye(), onTopCrossing));
         // A point on the road is not hidden by the road itself.

@@ -128,7 +128,7 @@ CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, st
             across(s.blockStartX[k], 12.0);
             across(s.blockFootX[k], 0.0);
         }
-        points.emplace_back(float(s.xTop), float(s.height + 10.0), 0.0f); // the label over the top
+        points.emplace_back(float(s.xTop), float(s.height + kTopLabelHeight + 2.0), 0.0f); // the top's label
         // A narrower view turns further downhill (up to 55 deg at aspect 0.85 and under), so that
         // the street runs across its height too instead of leaving it bare above and below.
         const float yaw = std::clamp(25.0f + 40.0f * (1.6f - aspect), 25.0f, 55.0f);

@@ -204,7 +204,7 @@ void addKerbsAndLabels(SceneGeometry& g, const street::Layout& s, const QString&
     // Just over the foot's line, not on it, from any distance.
     g.labels.push_back(
         {QVector3D(foot, kLift, 0.0f), QCoreApplication::translate("SceneGeometry", "foot"), footRed, true});
-    g.labels.push_back({QVector3D(float(s.xTop), float(s.height + 8.0), 0.0f),
+    g.labels.push_back({QVector3D(float(s.xTop), float(s.height + kTopLabelHeight), 0.0f),
                         QCoreApplication::translate("SceneGeometry", "top, %1 %2 above the foot")
                             .arg(QString::number(s.height, 'f', 1), unit),
                         labelInk});

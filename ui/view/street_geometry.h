@@ -11,6 +11,11 @@
 
 namespace ab::ui {
 
+// How far over the top crossing's far end the label "top, H m above the foot" stands: high
+// enough that from the foot it is drawn over the houses, not over the hopper where the balls
+// start (at 8 m it hid them in lecture mode's large text).
+constexpr double kTopLabelHeight = 18.0;
+
 // Fills `g` (floor: opaque triangles; cutaway: the +z houses; lines; labels; the framed
 // region) for `street`, labels in `lengthUnit`.
 void addStreetGeometry(SceneGeometry& g, const street::Layout& street, const QString& lengthUnit);
