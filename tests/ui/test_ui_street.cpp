@@ -206,6 +206,15 @@ private slots:
         // The key follows the symbol only where they differ ("r (r)" said it twice).
         QVERIFY2(panel.field("r")->toolTip().startsWith("<b>r</b>: "), qPrintable(panel.field("r")->toolTip()));
         QVERIFY2(panel.field("n")->toolTip().startsWith("<b>N</b> (n): "), qPrintable(panel.field("n")->toolTip()));
+        // Greek symbols as the equations set them: "theta (slope)" read as code beside St1's θ.
+        QVERIFY2(panel.field("slope")->toolTip().startsWith(QString::fromUtf8("<b>\u03b8</b> (slope): ")),
+                 qPrintable(panel.field("slope")->toolTip()));
+        QVERIFY2(panel.field("mu")->toolTip().startsWith(QString::fromUtf8("<b>\u03bc</b>")),
+                 qPrintable(panel.field("mu")->toolTip()));
+        QStringList labels;
+        for (const QLabel* l : panel.findChildren<QLabel*>())
+            labels << l->text();
+        QVERIFY2(labels.contains(QString::fromUtf8("\u03b8 (slope)")), qPrintable(labels.join(" | ")));
         // A refusal's range and unit stay on one line: "(0, 60] deg" broke before "deg".
         panel.refuse("slope", "slope: 70 is outside the allowed range (0, 60] deg");
         const QString refused = panel.findChild<QLabel*>("paramError-slope")->text();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "parameter_panel.h"
 
+#include "equation_rows.h"
 #include "number_field.h"
 
 #include "ui/i18n/core_text.h"
@@ -91,7 +92,7 @@ QString ParameterPanel::tooltip(const ParamSpec& spec)
 {
     const QString unit = prettyUnit(spec.unit);
     // "<b>v0</b> (v0)" said the name twice: the key follows the symbol only where they differ.
-    QString name = QStringLiteral("<b>%1</b>").arg(qs(spec.symbol).toHtmlEscaped());
+    QString name = QStringLiteral("<b>%1</b>").arg(formulaTypography(qs(spec.symbol)).toHtmlEscaped());
     if (spec.symbol != spec.key)
         name += QStringLiteral(" (%1)").arg(qs(spec.key).toHtmlEscaped());
     return QStringLiteral("%1: %2<br>%3 %4<br>%5 %6 %7<br>%8 %9")
@@ -120,8 +121,10 @@ void ParameterPanel::setScene(const SceneInfo& scene, ModelKind model, const Par
     for (const ParamSpec& spec : scene.params) {
         if (!spec.usedBy(mask))
             continue; // the chosen model would ignore it
-        const QString name =
-            spec.symbol == spec.key ? qs(spec.key) : QStringLiteral("%1 (%2)").arg(qs(spec.symbol), qs(spec.key));
+        // The symbol as the equations set it ("θ (slope)", "μ (mu)"), the key beside it where it differs.
+        const QString name = spec.symbol == spec.key
+                                 ? formulaTypography(qs(spec.key))
+                                 : QStringLiteral("%1 (%2)").arg(formulaTypography(qs(spec.symbol)), qs(spec.key));
         auto* label = new QLabel(name);
         auto* field = new QLineEdit;
         field->setObjectName(QStringLiteral("param-%1").arg(qs(spec.key)));
