@@ -8,10 +8,12 @@
 // without the colour-blind-safe palette, for every chart of every scene, compared and not.
 #include "ui/charts/chart_style.h"
 #include "ui/charts/motion_chart.h"
+#include "ui/charts/scene_layout.h"
 #include "ui/panels/transport_bar.h"
 #include "ui/theme/appearance.h"
 #include "ui/theme/theme.h"
 #include "ui/theme/theme_style.h"
+#include "ui/view/scene_geometry.h"
 
 #include <QAbstractAxis>
 #include <QApplication>
@@ -177,6 +179,24 @@ private slots:
             QVERIFY2(best >= 3.0, qPrintable(QString("%1: %2:1").arg(b->objectName()).arg(best)));
         }
         ab::ui::applyToApplication({Theme::Light, false, 1.0});
+    }
+
+    void stageOnesHeightScaleStandsOutOnTheViewAtThreeToOne_data() { addThemeRows(); }
+    void stageOnesHeightScaleStandsOutOnTheViewAtThreeToOne()
+    {
+        // The scale's line and ticks stand above the floor (y > 0), on the view's clear colour;
+        // the grid lies on the floor, on the floor's own colour.
+        QFETCH(Theme, theme);
+        const QColor background = ab::ui::surfaceColours(theme).background;
+        const ab::ui::SceneGeometry g =
+            ab::ui::buildSceneGeometry(ab::ui::layoutFor(ab::RunSpec(ab::SceneId::Bounce1d)), "unit");
+        int checked = 0;
+        for (const ab::ui::FlatVertex& v : g.lines)
+            if (v.y > 0.0f) {
+                CHECK_CONTRAST("height scale", QColor::fromRgbF(v.r, v.g, v.b), background, 3.0);
+                ++checked;
+            }
+        QVERIFY(checked >= 2);
     }
 
     void aCheckedButtonStandsApartAtThreeToOne_data() { addThemeRows(); }
