@@ -352,6 +352,28 @@ private slots:
         QTRY_VERIFY2(label->text().contains("looking back: Play goes on from here"), qPrintable(label->text()));
     }
 
+    void theBarStaysPutAsTheLiveTimeGainsDigits()
+    {
+        // Playing, "t = 9.50 step (live)" became "t = 950.0 step (live)" and, in lecture mode's
+        // large text, took its room from the time slider a digit at a time.
+        ab::ui::TransportBar bar;
+        QFont big = bar.font();
+        big.setPointSizeF(big.pointSizeF() * 1.6);
+        bar.setFont(big);
+        bar.resize(1280, bar.sizeHint().height());
+        bar.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&bar));
+        int length = -1;
+        for (const double t : {0.0, 9.5, 95.0, 950.0, 9500.0}) {
+            bar.setRecorded(0.0, t, "step");
+            for (int i = 0; i < 5; ++i)
+                QApplication::processEvents(); // the layout's turn
+            if (length < 0)
+                length = bar.timeSlider()->width();
+            QCOMPARE(bar.timeSlider()->width(), length);
+        }
+    }
+
     void chartsFollowTheChosenBall()
     {
         MainWindow w;

@@ -107,6 +107,8 @@ void TransportBar::changeEvent(QEvent* event)
     // dark grey, stayed on Step and Reset (and Play until the first press) on a black theme.
     if (event->type() == QEvent::StyleChange)
         setIcons();
+    if (event->type() == QEvent::FontChange) // lecture mode's text: the time label's room with it
+        updateLabel();
 }
 
 void TransportBar::setPlaying(bool playing)
@@ -202,8 +204,14 @@ void TransportBar::updateLabel()
     else if (viewTime_)
         timeLabel_->setText(tr("t = %1 of %2 %3 (looking back: Play goes on from here)")
                                 .arg(fmt(shownTime_.value_or(*viewTime_)), fmt(end_), unit_));
-    else
+    else {
+        // Room for the live time up to 9999.99 from the start: as the digits grow while playing
+        // the label, and the speed slider beside it, stay put (they moved by a digit's width).
+        const QString widest = tr("t = %1 %2 (live)").arg(QStringLiteral("0000.00"), unit_);
+        if (!time_->isSliderDown())
+            timeLabel_->setMinimumWidth(std::max(200, timeLabel_->fontMetrics().horizontalAdvance(widest) + 4));
         timeLabel_->setText(tr("t = %1 %2 (live)").arg(fmt(end_), unit_));
+    }
 }
 
 } // namespace ab::ui
