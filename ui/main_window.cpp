@@ -149,6 +149,8 @@ bool MainWindow::applyOptions(const RunOptions& options)
 void MainWindow::runReplaced()
 {
     scene_ = controller_.spec().scene;
+    for (QAction* shot : streetShots_) // the street's camera shots, greyed out in the other stages
+        shot->setEnabled(view_ != nullptr && scene_ == SceneId::Street);
     const SceneInfo& info = sceneInfo(scene_);
     setWindowTitle(tr("Amazeballs - stage %1: %2").arg(info.stage).arg(coreText(info.title)));
     const RunSpec& spec = controller_.spec();

@@ -20,7 +20,9 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
+class QAction;
 class QLabel;
 
 namespace ab::ui {
@@ -125,6 +127,7 @@ private:
     RunController controller_;
     std::map<SceneId, Setup> setups_;
     SceneId scene_ = SceneId::Bounce1d;
+    std::vector<QAction*> streetShots_; // View > Street: from the foot, from the side, follow the flood
     StageNavigator* navigator_ = nullptr;
     ParameterPanel* parameters_ = nullptr;
     RunOptionsPanel* runOptions_ = nullptr;

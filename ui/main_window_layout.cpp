@@ -275,7 +275,8 @@ void MainWindow::addStreetShots(QMenu* view)
             if (view_ && scene_ == SceneId::Street)
                 view_->setStreetShot(shot);
         });
-        a->setEnabled(view_ != nullptr);
+        a->setEnabled(view_ != nullptr && scene_ == SceneId::Street);
+        streetShots_.push_back(a);
     }
 }
 

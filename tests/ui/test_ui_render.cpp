@@ -240,6 +240,28 @@ private slots:
         QVERIFY(std::abs(view->camera().eye().z() - (before.z() - 2.0f)) < 1e-3f);
     }
 
+    void theStreetsCameraShotsAreOfferedOnTheStreetOnly()
+    {
+        // View > Street: ... did nothing in stages 1-4 but read as live; greyed out there now.
+        MainWindow& w = open(SceneId::TwoBalls);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QList<QAction*> shots;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text().startsWith("Street: "))
+                shots << a;
+        QCOMPARE(shots.size(), 3);
+        for (const QAction* a : shots)
+            QVERIFY2(!a->isEnabled(), qPrintable(a->text()));
+        w.showScene(SceneId::Street);
+        for (const QAction* a : shots)
+            QVERIFY2(a->isEnabled(), qPrintable(a->text()));
+        shots[1]->trigger(); // from the side
+        QVERIFY(w.view()->streetShot() == ab::ui::StreetShot::Side);
+        w.showScene(SceneId::Bounce1d);
+        for (const QAction* a : shots)
+            QVERIFY2(!a->isEnabled(), qPrintable(a->text()));
+    }
+
     void onTheStreetTheWheelStopsTheEyeOverTheRoad()
     {
         // The foot shot's target lies inside the hill: forty notches straight at it took the
