@@ -2105,6 +2105,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Run complete at t = %1 s</source>
         <translation>Klar vid t = %1 s</translation>
     </message>
+    <message>
+        <source>%1: the report&apos;s own rule</source>
+        <translation>%1: rapportens egen regel</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StreetCameraBar</name>

@@ -410,6 +410,10 @@ private slots:
         QVERIFY(label);
         QTRY_COMPARE(label->text(), QString("The report's rules at work"));
         shell.lecture().setActive(false);
+        // With room, the headline says so itself: the figure, then whose doing it is.
+        w.resize(1900, 1000);
+        QTRY_VERIFY2(label->text().startsWith("The energy is ") && label->text().endsWith(": the report's own rule"),
+                     qPrintable(label->text()));
     }
 
     void aLanguageSwitchKeepsTheRun()
