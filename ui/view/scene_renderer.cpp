@@ -79,17 +79,7 @@ bool SceneRenderer::initialize(QString& error)
     setupInstanced(ghostVao_, ghostPositions_, true);
     setupInstanced(shadowVao_, positions_, false);
     setupFlat(flatVao_, flat_);
-    {
-        QOpenGLVertexArrayObject::Binder bind(&traceVao_);
-        trace_.bind();
-        const auto stride = static_cast<GLsizei>(sizeof(TraceCorner));
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(TraceCorner, ox)));
-        glEnableVertexAttribArray(2);
-        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(TraceCorner, side)));
-    }
+    setupTrace();
     ready_ = true;
     return true;
 }
@@ -133,6 +123,21 @@ void SceneRenderer::setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buff
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, r)));
+}
+
+void SceneRenderer::setupTrace()
+{
+    // A corner: its point, its segment's other end, its edge of the band (trace.vert).
+    QOpenGLVertexArrayObject::Binder bind(&traceVao_);
+    trace_.bind();
+    const auto stride = static_cast<GLsizei>(sizeof(TraceCorner));
+    const std::pair<GLint, std::size_t> attributes[] = {
+        {3, offsetof(TraceCorner, x)}, {3, offsetof(TraceCorner, ox)}, {1, offsetof(TraceCorner, side)}};
+    for (GLuint k = 0; k < 3; ++k) {
+        glEnableVertexAttribArray(k);
+        glVertexAttribPointer(k, attributes[k].first, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<void*>(attributes[k].second));
+    }
 }
 
 void SceneRenderer::release()

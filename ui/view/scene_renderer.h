@@ -73,6 +73,7 @@ private:
     bool buildPrograms(QString& error);
     void setupInstanced(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& centres, bool withColours);
     void setupFlat(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& buffer);
+    void setupTrace();
     void setCommonUniforms(QOpenGLShaderProgram& program, const RenderInputs& in);
     // The ball program with its uniforms: the solid balls (`selected` ringed) or the ghosts.
     void useBallProgram(const RenderInputs& in, int selected, bool ghosts);
