@@ -9,8 +9,11 @@
 #include "ui/charts/scene_layout.h"
 #include "ui/sim/recording.h"
 #include "ui/sim/run_engine.h"
+#include "ui/view/orbit_camera.h"
 #include "ui/view/scene_geometry.h"
+#include "ui/view/view_frame.h"
 
+#include <QPainter>
 #include <QtTest>
 
 #include <cmath>
@@ -140,6 +143,44 @@ private slots:
         }
         const ab::ui::SceneLayout box = ab::ui::layoutFor(ab::RunSpec(ab::SceneId::ManyBalls));
         QCOMPARE(box.drawnInset, 0.0);
+    }
+
+    // Stage 1 labels its ball with its height beside the ball as drawn: the text's first inked
+    // pixel on the ball's row lies at least the ball's projected radius and a third of a line
+    // from its centre (at 0.9 of a line from the centre, "y = 0.0" touched a ball drawn larger).
+    void theHeightLabelStandsClearOfTheBall()
+    {
+        const ab::ui::SceneLayout l = ab::ui::layoutFor(ab::RunSpec(ab::SceneId::Bounce1d));
+        const ab::ui::SceneGeometry g = ab::ui::buildSceneGeometry(l, "unit");
+        const QSize size(480, 990); // the window's view at 1920x1080
+        ab::ui::OrbitCamera camera;
+        ab::ui::frameSceneCamera(camera, g, l, float(size.width()) / float(size.height()));
+        const std::vector<float> ball{0.0f, 1000.0f, 0.0f};
+        QPointF centre, rim;
+        QVERIFY(camera.project(QVector3D(0.0f, 1000.0f, 0.0f), size, centre));
+        QVERIFY(camera.project(QVector3D(0.0f, 1000.0f + float(l.ballRadius), 0.0f), size, rim));
+        const double radius =
+            std::max(QLineF(centre, rim).length(), double(ab::ui::smallestBallPixels(l, size.height(), 1.0)));
+        QVERIFY(radius > 5.0);
+        QImage image(size, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QFont font;
+        font.setPixelSize(13); // 10 pt
+        {
+            QPainter p(&image);
+            ab::ui::SceneGeometry unlabelled = g;
+            unlabelled.labels.clear(); // the scale's numbers lie left of the ball; only the ball's label
+            ab::ui::paintSceneLabels(p, camera, size, unlabelled, l, ball, font);
+        }
+        const int row = int(std::lround(centre.y()));
+        int first = -1;
+        for (int x = int(centre.x()); x < size.width() && first < 0; ++x)
+            for (int dy = -3; dy <= 3 && first < 0; ++dy)
+                if (qGray(image.pixel(x, row + dy)) < 100)
+                    first = x;
+        QVERIFY2(first > 0, "no label drawn");
+        QVERIFY2(first - centre.x() >= radius + 13.0 / 3.0,
+                 qPrintable(QString("text at %1 px from the centre, ball %2 px").arg(first - centre.x()).arg(radius)));
     }
 
     void recordingKeepsFramesWithinItsBudgetAndFindsThemByTime()

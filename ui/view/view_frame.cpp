@@ -171,12 +171,18 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
         at.setY(inside(at.y(), fm.height() / 2.0 + 3.0, size.height()));
         drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
     }
-    // The vertical scene reads its height off the scale: label the ball with it.
-    if (!layout.walls && !layout.street && balls.size() >= 3 &&
-        camera.project(QVector3D(balls[0], balls[1], balls[2]), size, at))
-        drawHaloText(p, at + QPointF(0.9 * QFontMetricsF(font).height(), 0.0),
+    // The vertical scene reads its height off the scale: label the ball with it, beside the
+    // ball as drawn (its projected radius, or the smallest drawn size) and half a line clear.
+    const QVector3D centre = balls.size() >= 3 ? QVector3D(balls[0], balls[1], balls[2]) : QVector3D();
+    QPointF rim;
+    if (!layout.walls && !layout.street && balls.size() >= 3 && camera.project(centre, size, at) &&
+        camera.project(centre + QVector3D(0.0f, float(layout.ballRadius), 0.0f), size, rim)) {
+        const double radius =
+            std::max(QLineF(at, rim).length(), double(smallestBallPixels(layout, size.height(), 1.0)));
+        drawHaloText(p, at + QPointF(radius + 0.5 * QFontMetricsF(font).height(), 0.0),
                      QStringLiteral("y = %1").arg(double(balls[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
                      Qt::AlignLeft);
+    }
 }
 
 } // namespace ab::ui
