@@ -1947,10 +1947,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>ingen 3D-vy</translation>
     </message>
     <message>
-        <source>- fps</source>
-        <translation>- bilder/s</translation>
-    </message>
-    <message>
         <source>Paused: %1</source>
         <translation>Pausad: %1</translation>
     </message>
@@ -2108,6 +2104,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>%1: the report&apos;s own rule</source>
         <translation>%1: rapportens egen regel</translation>
+    </message>
+    <message>
+        <source>– fps</source>
+        <translation>– bilder/s</translation>
     </message>
 </context>
 <context>

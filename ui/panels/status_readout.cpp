@@ -62,7 +62,7 @@ void fitText(QLabel* label)
 QString formatDuration(double seconds)
 {
     if (!std::isfinite(seconds) || seconds <= 0.0)
-        return QStringLiteral("-");
+        return QStringLiteral("\u2013"); // no figure yet: a dash, not a minus sign
     if (seconds < 1e-3)
         return QStringLiteral("%1 \u00b5s").arg(seconds * 1e6, 0, 'g', 3);
     if (seconds < 1.0)
@@ -376,7 +376,7 @@ void StatusReadout::setFrameRate(double fps)
 {
     // %n: Swedish has "1 bild/s" and "2 bilder/s".
     fps_->setText(fps < 0.0    ? tr("no 3D view")
-                  : fps == 0.0 ? tr("- fps")
+                  : fps == 0.0 ? tr("\u2013 fps")
                                : tr("%n fps", nullptr, static_cast<int>(std::lround(fps))));
     fitText(fps_);
 }
