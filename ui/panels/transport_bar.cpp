@@ -69,7 +69,6 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     row->addWidget(time_, 1);
     timeLabel_ = new QLabel;
     timeLabel_->setObjectName("timeLabel");
-    timeLabel_->setMinimumWidth(200);
     row->addWidget(timeLabel_);
 
     connect(play_, &QPushButton::clicked, this, &TransportBar::playToggled);
@@ -84,13 +83,14 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     // its width and reads the short form; the whole form, and its room, come on release.
     connect(time_, &QSlider::sliderPressed, this, [this] { timeLabel_->setFixedWidth(timeLabel_->width()); });
     connect(time_, &QSlider::sliderReleased, this, [this] {
-        timeLabel_->setMinimumWidth(200);
         timeLabel_->setMaximumWidth(QWIDGETSIZE_MAX);
+        fitTimeLabel();
         updateLabel();
     });
     setPlaying(false);
     setSpeed(1.0);
     setRecorded(0.0, 0.0, QString());
+    fitTimeLabel();
 }
 
 void TransportBar::setIcons()
@@ -108,7 +108,7 @@ void TransportBar::changeEvent(QEvent* event)
     if (event->type() == QEvent::StyleChange)
         setIcons();
     if (event->type() == QEvent::FontChange) // lecture mode's text: the time label's room with it
-        updateLabel();
+        fitTimeLabel();
 }
 
 void TransportBar::setPlaying(bool playing)
@@ -137,7 +137,10 @@ void TransportBar::setRecorded(double start, double end, const QString& unit)
 {
     start_ = start;
     end_ = std::max(end, start);
-    unit_ = unit;
+    if (unit != unit_) {
+        unit_ = unit;
+        fitTimeLabel();
+    }
     if (!viewTime_) {
         updating_ = true;
         time_->setValue(timeSteps);
@@ -196,6 +199,17 @@ void TransportBar::setShownTime(double t)
     updateLabel();
 }
 
+void TransportBar::fitTimeLabel()
+{
+    // Room for the live time up to 9999.99 from the start: as the digits grow while playing
+    // the label, and the speed slider beside it, stay put (they moved by a digit's width). It
+    // depends on the font and the unit only; while the slider is held the width stays fixed.
+    if (time_->isSliderDown())
+        return;
+    const QString widest = tr("t = %1 %2 (live)").arg(QStringLiteral("0000.00"), unit_);
+    timeLabel_->setMinimumWidth(std::max(200, timeLabel_->fontMetrics().horizontalAdvance(widest) + 4));
+}
+
 void TransportBar::updateLabel()
 {
     const auto fmt = [](double t) { return QString::number(t, 'f', t < 100 ? 2 : 1); };
@@ -204,14 +218,8 @@ void TransportBar::updateLabel()
     else if (viewTime_)
         timeLabel_->setText(tr("t = %1 of %2 %3 (looking back: Play goes on from here)")
                                 .arg(fmt(shownTime_.value_or(*viewTime_)), fmt(end_), unit_));
-    else {
-        // Room for the live time up to 9999.99 from the start: as the digits grow while playing
-        // the label, and the speed slider beside it, stay put (they moved by a digit's width).
-        const QString widest = tr("t = %1 %2 (live)").arg(QStringLiteral("0000.00"), unit_);
-        if (!time_->isSliderDown())
-            timeLabel_->setMinimumWidth(std::max(200, timeLabel_->fontMetrics().horizontalAdvance(widest) + 4));
+    else
         timeLabel_->setText(tr("t = %1 %2 (live)").arg(fmt(end_), unit_));
-    }
 }
 
 } // namespace ab::ui

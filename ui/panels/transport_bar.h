@@ -61,6 +61,7 @@ protected:
 private:
     void setIcons();
     void scrubbed(int value);
+    void fitTimeLabel();
     void updateLabel();
 
     QPushButton* play_;
