@@ -75,7 +75,7 @@ QString minusSigns(const QString& in)
 {
     QString out = in;
     for (qsizetype i = 0; i < out.size(); ++i) {
-        if (out[i] != '-' || (i + 1 < out.size() && out[i + 1] == '>'))
+        if (out[i] != '-')
             continue;
         const QChar before = i > 0 ? out[i - 1] : QChar(' ');
         if (before.isSpace() || QStringLiteral("([=+*/,").contains(before))
@@ -89,7 +89,7 @@ QString minusSigns(const QString& in)
 QString formulaTypography(const QString& formula)
 {
     QString out = greekLetters(formula);
-    // Relations before the minus signs: "->" keeps its hyphen until it is an arrow.
+    // Relations before the minus signs: "->" is an arrow before its hyphen could become a minus.
     out.replace(QLatin1String("<="), QString(QChar(0x2264)))
         .replace(QLatin1String(">="), QString(QChar(0x2265)))
         .replace(QLatin1String("!="), QString(QChar(0x2260)))
@@ -104,10 +104,10 @@ QString formulaTypography(const QString& formula)
 QString formulaHtml(const QString& ascii)
 {
     const QString formula = formulaTypography(ascii);
-    // Relations and the signs of a sum or a quotient, ASCII and as the run's panels write them
-    // (minus, approximately, at most, at least, not equal).
-    static const QStringList breakBefore = {"=",  "+", "-",      "/",      "<",      ">",      "<=",     ">=",
-                                            "->", "~", "\u2212", "\u2248", "\u2264", "\u2265", "\u2260", "\u2192"};
+    // Relations and the signs of a sum or a quotient as formulaTypography sets them (a hyphen
+    // after a space is a minus sign by then, "<=" an at-most sign, "->" an arrow).
+    static const QStringList breakBefore = {"=",      "+",      "/",      "<",      ">",      "~",
+                                            "\u2212", "\u2248", "\u2264", "\u2265", "\u2260", "\u2192"};
     const std::vector<bool> held = inShortBrackets(formula, 16);
     QString out;
     for (qsizetype i = 0; i < formula.size(); ++i) {
