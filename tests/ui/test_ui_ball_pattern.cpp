@@ -3,6 +3,7 @@
 // resources/shaders/ball.*): a ball of radius 60 px seen along the world z axis, with its
 // pole (body z) towards the eye, away from it, or turned about the pole. Under xvfb-run
 // (QT_QPA_PLATFORM=xcb): it needs OpenGL.
+#include "support/opengl_platform.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/video/offscreen_view.h"
 #include "ui/view/view_frame.h"
@@ -68,9 +69,8 @@ class UiBallPattern : public QObject {
 private slots:
     void init()
     {
-        const QString platform = QGuiApplication::platformName();
-        if (platform == "offscreen" || platform == "minimal")
-            QSKIP("needs OpenGL; run under xvfb-run with QT_QPA_PLATFORM=xcb");
+        if (!testing::platformHasOpenGl())
+            QSKIP(testing::kNeedsOpenGl);
     }
 
     // Without orientations the ball is its own colour all over, as in a run that never

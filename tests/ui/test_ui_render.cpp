@@ -6,6 +6,7 @@
 // where they otherwise walk the equations; a comparison run's
 // balls are drawn ghosted beside the solid ones. Skipped where the
 // platform has no OpenGL windows (offscreen, minimal).
+#include "support/opengl_platform.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/lecture/lecture_mode.h"
 #include "ui/main_window.h"
@@ -86,9 +87,8 @@ private:
 private slots:
     void init()
     {
-        const QString platform = QGuiApplication::platformName();
-        if (platform == "offscreen" || platform == "minimal")
-            QSKIP("no OpenGL windows on this platform; run under xvfb-run with QT_QPA_PLATFORM=xcb");
+        if (!testing::platformHasOpenGl())
+            QSKIP(testing::kNeedsOpenGl);
     }
 
     void cleanup() { window_.reset(); }

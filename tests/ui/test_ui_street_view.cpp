@@ -3,6 +3,7 @@
 // foot shot sees the asphalt of the road up the hill and the sky above the houses; a ball
 // on the road is drawn in its colour, one that has left beyond the open foot is not.
 // Skipped where the platform has no OpenGL (offscreen, minimal).
+#include "support/opengl_platform.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/video/offscreen_view.h"
 #include "ui/view/street_camera.h"
@@ -56,9 +57,8 @@ private:
 
     void open(double radius, StreetShot shot)
     {
-        const QString platform = QGuiApplication::platformName();
-        if (platform == "offscreen" || platform == "minimal")
-            QSKIP("no OpenGL on this platform");
+        if (!testing::platformHasOpenGl())
+            QSKIP(testing::kNeedsOpenGl);
         layout_ = layoutFor(streetSpec(radius));
         view_ = std::make_unique<OffscreenView>(QSize(640, 480));
         view_->initialize();

@@ -3,6 +3,7 @@
 // resources/shaders/trace.vert): a band three pixels wide in the path's colour with a
 // pixel's edge each side in a colour of the other lightness, across whatever the path
 // runs over. Under xvfb-run (QT_QPA_PLATFORM=xcb): it needs OpenGL.
+#include "support/opengl_platform.h"
 #include "ui/charts/scene_layout.h"
 #include "ui/video/offscreen_view.h"
 #include "ui/view/view_frame.h"
@@ -69,9 +70,8 @@ class UiTrace : public QObject {
 private slots:
     void init()
     {
-        const QString platform = QGuiApplication::platformName();
-        if (platform == "offscreen" || platform == "minimal")
-            QSKIP("needs OpenGL; run under xvfb-run with QT_QPA_PLATFORM=xcb");
+        if (!testing::platformHasOpenGl())
+            QSKIP(testing::kNeedsOpenGl);
     }
 
     // A path across the view, level and then upright: wherever it is crossed, three pixels

@@ -7,6 +7,7 @@
 // the same frames. Cancel and Ctrl+C leave no file, and bad input is refused with one
 // line, status 2 and no file. Needs OpenGL: run under xvfb-run with QT_QPA_PLATFORM=xcb.
 #include "support/cli_runner.h"
+#include "support/opengl_platform.h"
 
 #include "ui/charts/scene_layout.h"
 #include "ui/main_window.h"
@@ -165,9 +166,8 @@ class VideoExport : public QObject {
 private slots:
     void init()
     {
-        const QString platform = QGuiApplication::platformName();
-        if (platform == "offscreen" || platform == "minimal")
-            QSKIP("needs OpenGL; run under xvfb-run with QT_QPA_PLATFORM=xcb");
+        if (!testing::platformHasOpenGl())
+            QSKIP(testing::kNeedsOpenGl);
     }
 
     void aClipHoldsItsLengthTimesItsFrameRateInFrames_data()
