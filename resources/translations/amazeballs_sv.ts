@@ -1381,6 +1381,38 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Σ E</source>
         <translation>Σ E</translation>
     </message>
+    <message>
+        <source>Energy per unit mass, mean per ball (%1)</source>
+        <translation>Energi per massenhet, medelvärde per boll (%1)</translation>
+    </message>
+    <message>
+        <source>E/m, mean per ball (%1)</source>
+        <translation>E/m, medelvärde per boll (%1)</translation>
+    </message>
+    <message>
+        <source>mean E/m (%1)</source>
+        <translation>medel-E/m (%1)</translation>
+    </message>
+    <message>
+        <source>Energy, mean per ball (kg %1)</source>
+        <translation>Energi, medelvärde per boll (kg %1)</translation>
+    </message>
+    <message>
+        <source>E, mean per ball (kg %1)</source>
+        <translation>E, medelvärde per boll (kg %1)</translation>
+    </message>
+    <message>
+        <source>mean E (kg %1)</source>
+        <translation>medel-E (kg %1)</translation>
+    </message>
+    <message>
+        <source>mean E/m</source>
+        <translation>medel-E/m</translation>
+    </message>
+    <message>
+        <source>mean E</source>
+        <translation>medel-E</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ParameterPanel</name>
@@ -2023,10 +2055,6 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <translation>snabbast %1 m/s</translation>
     </message>
     <message>
-        <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot, and what the balls that left at the foot took with them: the mean over the %1 balls. All balls together: %2 %3, the energy chart&apos;s total</source>
-        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot, och det som bollarna som lämnat vid foten tog med sig: medelvärdet över de %1 bollarna. Alla bollar tillsammans: %2 %3, energidiagrammets totala</translation>
-    </message>
-    <message>
         <source>All %1 balls have left at the foot</source>
         <translation>Alla %1 bollar har lämnat vid foten</translation>
     </message>
@@ -2108,6 +2136,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>– fps</source>
         <translation>– bilder/s</translation>
+    </message>
+    <message>
+        <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot, and what the balls that left at the foot took with them: the mean over the %1 balls, as the energy chart draws it. All balls together: %2 %3</source>
+        <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot, och det som bollarna som lämnat vid foten tog med sig: medelvärdet över de %1 bollarna, som energidiagrammet ritar det. Alla bollar tillsammans: %2 %3</translation>
     </message>
 </context>
 <context>

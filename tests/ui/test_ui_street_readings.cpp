@@ -20,6 +20,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QLineSeries>
+#include <QValueAxis>
 #include <QPainter>
 #include <QSet>
 #include <QStatusBar>
@@ -80,7 +81,9 @@ private slots:
         const QString sq = QString::fromUtf8("\u00b2");
         QCOMPARE(readout.energyText(), QString("E/m = 49.1 m%1/s%1 a ball").arg(sq));
         auto* label = bar.findChild<QLabel*>("statusEnergy");
-        QVERIFY(label && label->toolTip().contains(QString("the 4 balls. All balls together: 196.4 m%1/s%1").arg(sq)));
+        QVERIFY(label &&
+                label->toolTip().contains(
+                    QString("the 4 balls, as the energy chart draws it. All balls together: 196.4 m%1/s%1").arg(sq)));
         // One ball is not a crowd: stage 2 reads its own energy, g h = 9.82 x 2 per unit mass.
         RunSpec box(SceneId::Box3d);
         readout.setRun(box);
@@ -237,6 +240,41 @@ private slots:
         QCOMPARE(recording.track().ballSamples(), std::size_t(3));
         recording.add(3, stateAt(s, {s.xFoot - 3.0, 10.0}, {10.0, 1.0}, 0.3));
         QCOMPARE(recording.track().ballSamples(), std::size_t(4));
+    }
+
+    void theStreetsEnergyChartDrawsTheMeanPerBall()
+    {
+        // The street's sums over 10,000 balls ran to an axis of "8000000": its chart draws the
+        // mean a ball, as the status bar reads it. At the start (the hopper's balls) the total
+        // is the mean over the balls of |v|^2 / 2 + q r^2 |w|^2 / 2 + g y (docs/spin.md; the foot
+        // at y = 0), summed here from the state itself.
+        const RunSpec spec = streetSpec(20);
+        const auto sim = makeSimulation(spec);
+        const ConservationMeter meter(*sim);
+        const ChartUnits units = chartUnitsOf(meter, spec);
+        QCOMPARE(units.energyMeanOver, 20);
+        Recording recording(layoutFor(spec), meter, 0);
+        State s = sim->start(), next;
+        recording.add(0, s);
+        for (long long k = 1; k <= 5; ++k) {
+            sim->step(s, next);
+            std::swap(s, next);
+            recording.add(k, s);
+        }
+        MotionChart chart(ChartKind::Energy);
+        chart.configure(sceneInfo(SceneId::Street), 0, units);
+        chart.setTimeSpan(s.t);
+        chart.showTrack(recording.track(), 600);
+        QVERIFY2(chart.title().contains("mean per ball"), qPrintable(chart.title()));
+        QCOMPARE(chart.valueAxis()->titleText(), QString("mean E/m"));
+        const State start = sim->start();
+        const double g = spec.params.real("g"), r = spec.params.real("r"), q = spec.params.real("inertia");
+        double sum = 0.0;
+        for (int i = 0; i < start.size(); ++i)
+            sum +=
+                0.5 * start.v.col(i).squaredNorm() + 0.5 * q * r * r * start.spin(i).squaredNorm() + g * start.p(1, i);
+        const double mean = sum / 20.0, drawn = chart.line(2)->points().front().y();
+        QVERIFY2(std::abs(drawn - mean) <= 1e-12 * mean, qPrintable(QString("%1 against %2").arg(drawn).arg(mean)));
     }
 
     void theEnergyChartsTotalKeepsWhatTheBallsTookOutAtTheFoot()

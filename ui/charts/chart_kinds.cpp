@@ -32,8 +32,10 @@ ChartUnits chartUnitsOf(const ConservationMeter& meter)
 ChartUnits chartUnitsOf(const ConservationMeter& meter, const RunSpec& spec)
 {
     ChartUnits units = chartUnitsOf(meter);
-    if (spec.scene == SceneId::Street)
+    if (spec.scene == SceneId::Street) {
         units.streetBlocks = static_cast<int>(spec.params.integer("blocks"));
+        units.energyMeanOver = static_cast<int>(spec.params.integer("n")); // as the status bar's E/m a ball
+    }
     return units;
 }
 

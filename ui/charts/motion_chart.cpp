@@ -142,6 +142,7 @@ void MotionChart::configure(const SceneInfo& scene, int ball, const ChartUnits& 
                                           {"\u0394x", "\u0394y", "\u0394z"},
                                           {"\u03c9x", "\u03c9y", "\u03c9z"}};
     spins_ = units.spins;
+    meanOver_ = units.energyMeanOver;
     chooseLines(scene.axes, units);
     QString names[maxLines];
     nameChart(scene, ball, units, names);
@@ -210,7 +211,12 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
                                                       &track.spring(),
                                                       &track.rotation(),
                                                       &track.left()};
-        return *parts[line];
+        if (meanOver_ <= 0)
+            return *parts[line];
+        rate_.resize(parts[line]->size()); // the mean a ball: the sum over the n balls / n
+        std::transform(parts[line]->begin(), parts[line]->end(), rate_.begin(),
+                       [n = double(meanOver_)](double sum) { return sum / n; });
+        return rate_;
     }
     case ChartKind::Spin:
         return track.w(line);

@@ -55,6 +55,8 @@ struct ChartUnits {
     bool spins = false;      // the balls turn: kinetic energy splits into translation and rotation, and
                              // the spin chart applies
     int streetBlocks = 0;    // the street's blocks (stage 5): the foot-rate chart's lines follow footBlocks()
+    int energyMeanOver = 0;  // > 0: the energy chart draws the mean a ball, the meter's sums over this many
+                             // balls divided by it (the street's n: its sums run to millions)
 };
 
 // What `meter` measures the run's charts with.
@@ -156,6 +158,8 @@ private:
     // Its title forms, value axis title and line names (`names`, maxLines of them; those left
     // empty are the axes' x, y, z), for ball `ball` of `scene`.
     void nameChart(const SceneInfo& scene, int ball, const ChartUnits& units, QString* names);
+    // The energy chart's part of nameChart, its energy in `energyUnit`.
+    void nameEnergy(const SceneInfo& scene, const ChartUnits& units, const QString& energyUnit, QString* names);
     // The foot-rate chart's line names, for a street of `blocks` blocks.
     static void nameFeet(QString* names, int blocks);
     // The lines of `track` into `series`, widening the axes to hold them.
@@ -179,6 +183,7 @@ private:
     QLineSeries* cursor_;
     std::vector<int> shownAxes_;
     bool spins_ = false; // the energy chart splits kinetic energy (ChartUnits::spins)
+    int meanOver_ = 0;   // ChartUnits::energyMeanOver
     double tEnd_ = 1.0;
     std::optional<double> cursorT_;
     std::optional<ReferenceMotion> reference_;
@@ -186,7 +191,7 @@ private:
     double lo_ = 0.0, hi_ = 0.0;
     bool haveRange_ = false;
     double rateHi_ = 0.0;
-    std::vector<double> rate_; // impacts per unit of time, from the last track shown
+    std::vector<double> rate_; // impacts per unit of time, from the last track shown (or a mean a ball)
     std::vector<double> diffT_;
     std::array<std::vector<double>, 3> diffRun_;
     int insetLeft_ = 0, insetRight_ = 0;

@@ -74,33 +74,9 @@ void MotionChart::nameChart(const SceneInfo& scene, int ball, const ChartUnits& 
         titleForms_ = {tr("Velocity of %1").arg(who)};
         valueAxis_->setTitleText(tr("velocity (%1/%2)").arg(length, time));
         break;
-    case ChartKind::Energy: {
-        // Of several balls the chart draws the sum, and says so: the street's 3,000 balls sum to
-        // millions of m^2/s^2, which "energy per unit mass, all balls" let a reader take for one
-        // ball's (a speed of 1,900 m/s). The status bar gives the street's mean a ball.
-        const bool one = scene.ballCount == 1;
-        if (units.perUnitMass)
-            titleForms_ =
-                one ? QStringList{tr("Energy per unit mass (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
-                    : QStringList{tr("Energy per unit mass, sum over all balls (%1)").arg(energyUnit),
-                                  tr("E/m, sum over all balls (%1)").arg(energyUnit),
-                                  tr("\u03a3 E/m, all balls (%1)").arg(energyUnit),
-                                  tr("\u03a3 E/m (%1)").arg(energyUnit)};
-        else
-            titleForms_ = one ? QStringList{tr("Energy (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)}
-                              : QStringList{tr("Energy, sum over all balls (kg %1)").arg(energyUnit),
-                                            tr("E, sum over all balls (kg %1)").arg(energyUnit),
-                                            tr("\u03a3 E (kg %1)").arg(energyUnit)};
-        valueAxis_->setTitleText(units.perUnitMass ? (one ? tr("E/m") : tr("\u03a3 E/m"))
-                                                   : (one ? tr("E") : tr("\u03a3 E")));
-        names[0] = units.spins ? tr("translation") : tr("kinetic");
-        names[1] = tr("potential");
-        names[2] = tr("total");
-        names[3] = tr("spring");
-        names[4] = tr("rotation");
-        names[5] = tr("left at the foot");
+    case ChartKind::Energy:
+        nameEnergy(scene, units, energyUnit, names);
         break;
-    }
     case ChartKind::Momentum:
         titleForms_ =
             units.perUnitMass
@@ -142,6 +118,43 @@ void MotionChart::nameChart(const SceneInfo& scene, int ball, const ChartUnits& 
         names[3] = tr("fastest");
         break;
     }
+}
+
+void MotionChart::nameEnergy(const SceneInfo& scene, const ChartUnits& units, const QString& energyUnit, QString* names)
+{
+    // Of several balls the chart draws the sum, and says so: "energy per unit mass, all balls"
+    // let a reader take the street's sum for one ball's (a speed of 1,900 m/s). The street's
+    // 10,000 balls sum to millions of m^2/s^2, an axis of "8000000" a lecture hall cannot
+    // read: its chart draws the mean a ball (ChartUnits::energyMeanOver), as its status bar.
+    const bool one = scene.ballCount == 1;
+    if (units.energyMeanOver > 0) {
+        titleForms_ =
+            units.perUnitMass
+                ? QStringList{tr("Energy per unit mass, mean per ball (%1)").arg(energyUnit),
+                              tr("E/m, mean per ball (%1)").arg(energyUnit), tr("mean E/m (%1)").arg(energyUnit)}
+                : QStringList{tr("Energy, mean per ball (kg %1)").arg(energyUnit),
+                              tr("E, mean per ball (kg %1)").arg(energyUnit), tr("mean E (kg %1)").arg(energyUnit)};
+        valueAxis_->setTitleText(units.perUnitMass ? tr("mean E/m") : tr("mean E"));
+    } else if (units.perUnitMass)
+        titleForms_ =
+            one ? QStringList{tr("Energy per unit mass (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
+                : QStringList{tr("Energy per unit mass, sum over all balls (%1)").arg(energyUnit),
+                              tr("E/m, sum over all balls (%1)").arg(energyUnit),
+                              tr("\u03a3 E/m, all balls (%1)").arg(energyUnit), tr("\u03a3 E/m (%1)").arg(energyUnit)};
+    else
+        titleForms_ = one ? QStringList{tr("Energy (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)}
+                          : QStringList{tr("Energy, sum over all balls (kg %1)").arg(energyUnit),
+                                        tr("E, sum over all balls (kg %1)").arg(energyUnit),
+                                        tr("\u03a3 E (kg %1)").arg(energyUnit)};
+    if (units.energyMeanOver <= 0)
+        valueAxis_->setTitleText(units.perUnitMass ? (one ? tr("E/m") : tr("\u03a3 E/m"))
+                                                   : (one ? tr("E") : tr("\u03a3 E")));
+    names[0] = units.spins ? tr("translation") : tr("kinetic");
+    names[1] = tr("potential");
+    names[2] = tr("total");
+    names[3] = tr("spring");
+    names[4] = tr("rotation");
+    names[5] = tr("left at the foot");
 }
 
 void MotionChart::nameFeet(QString* names, int blocks)

@@ -188,13 +188,13 @@ void StatusReadout::showEnergy(double energy, bool perUnitMass, const QString& l
         energy_->setText(perUnitMass ? tr("E/m = -") : tr("E = -"));
     } else if (n > 2 && perUnitMass) {
         // The street's sum over 10,000 balls runs to millions of m^2/s^2, which a lecture
-        // hall cannot read; the mean a ball, sum/n, reads the same for any crowd. The
-        // energy chart draws the sum, which the tooltip gives. (Stage 4's 150 balls sum
+        // hall cannot read; the mean a ball, sum/n, reads the same for any crowd, and the
+        // energy chart draws it too. The tooltip gives the sum. (Stage 4's 150 balls sum
         // to a readable figure, and its long units leave the bar no room for "a ball".)
         energy_->setText(tr("E/m = %1 %2 a ball").arg(QString::number(energy / double(n), 'g', 4), unit));
         energy_->setToolTip(tr("Kinetic plus potential energy per unit mass, with the height measured from the "
                                "street's foot, and what the balls that left at the foot took with them: the mean over "
-                               "the %1 balls. All balls together: %2 %3, the energy chart's total")
+                               "the %1 balls, as the energy chart draws it. All balls together: %2 %3")
                                 .arg(n)
                                 .arg(QString::number(energy, 'g', 5), unit));
         return;
