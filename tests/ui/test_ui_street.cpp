@@ -438,8 +438,10 @@ private slots:
         QVERIFY2(nearKerb.y() - farKerb.y() > 6.0, qPrintable(QString::number(nearKerb.y() - farKerb.y())));
         // Framed on the street, not its bounding box, in a wide view and in the window's tall
         // one: the road from the top to 20 m past the foot, and the top's label, are in the
-        // picture, and the road spans most of its width (a tenth of the picture was used).
-        for (const QSize size : {view, QSize(840, 990)}) {
+        // picture, and the road spans most of its width (a tenth of the picture was used). So
+        // are the back wall's corners across the top: lecture mode's view at 1280x720, 485 px by
+        // 500, cut it and the first house at its left edge.
+        for (const QSize size : {view, QSize(840, 990), QSize(485, 500)}) {
             const OrbitCamera c = cameraAt(s, StreetShot::Side, size);
             QPointF top2, run, label;
             QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height), 0.0f), size, top2));
@@ -447,6 +449,20 @@ private slots:
             QVERIFY(c.project(QVector3D(float(s.xTop), float(s.height + ab::ui::kTopLabelHeight), 0.0f), size, label));
             QVERIFY(onScreen(top2, size) && onScreen(run, size) && onScreen(label, size));
             QVERIFY2(run.x() - top2.x() > 0.75 * size.width(), qPrintable(QString::number(run.x() - top2.x())));
+            for (const street::Box& b : s.boxes)
+                if (b.kind == street::ItemKind::BackWall)
+                    for (const float z : {-1.0f, 1.0f})
+                        for (const float y : {-1.0f, 1.0f}) {
+                            const QVector3D corner(float(b.centre.x() - b.half.x()),
+                                                   float(b.centre.y() + y * b.half.y()), z * float(b.half.z()));
+                            QPointF at;
+                            QVERIFY(c.project(corner, size, at));
+                            // Inside the fit's margin (2.5 % of the width and height): not at the edge.
+                            const QRectF inner = QRectF(QPointF(0, 0), QSizeF(size))
+                                                     .adjusted(0.02 * size.width(), 0.02 * size.height(),
+                                                               -0.02 * size.width(), -0.02 * size.height());
+                            QVERIFY2(inner.contains(at), qPrintable(QString("%1, %2").arg(at.x()).arg(at.y())));
+                        }
         }
     }
 

@@ -116,7 +116,8 @@ CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, st
         // From the +z side, 24 deg above and turned 25 deg downhill: the road shows its width,
         // and the flood on it, over the near houses (cut away); level with the street it was
         // a line. Framed on the street itself: the road's edges at the top, at each block's
-        // ends and 20 m past the foot, the far houses' roofs over them, and the top's label.
+        // ends and 20 m past the foot, the far houses' roofs over them, the back wall across
+        // the top and the top's label.
         std::vector<QVector3D> points;
         auto across = [&](double x, double above) {
             for (float z : {-far, near})
@@ -124,6 +125,12 @@ CameraPose streetPose(const street::Layout& s, StreetShot shot, float aspect, st
         };
         for (double x : {s.xTop, s.xFoot, s.xFoot + 20.0})
             across(x, 0.0);
+        for (const street::Box& b : s.boxes) // the back wall across the top, up to the houses' height
+            if (b.kind == street::ItemKind::BackWall)
+                for (float z : {-1.0f, 1.0f})
+                    for (float y : {-1.0f, 1.0f})
+                        points.emplace_back(float(b.centre.x() - b.half.x()), float(b.centre.y() + y * b.half.y()),
+                                            z * float(b.half.z()));
         for (std::size_t k = 0; k < s.blockStartX.size(); ++k) {
             across(s.blockStartX[k], 12.0);
             across(s.blockFootX[k], 0.0);
