@@ -20,11 +20,11 @@
 #include <QImage>
 #include <QLabel>
 #include <QLineSeries>
-#include <QValueAxis>
 #include <QPainter>
 #include <QSet>
 #include <QStatusBar>
 #include <QToolButton>
+#include <QValueAxis>
 #include <QtTest>
 
 using namespace ab;
@@ -323,6 +323,36 @@ private slots:
         QCOMPARE(left.front().y(), 0.0);
         QVERIFY(std::abs(left.back().y() - e0) <= 1e-9 * e0);
         QCOMPARE(potential.back().y(), 0.0);
+    }
+
+    void aLabelReadsTheSameWhereverItsPointFallsWithinAPixel()
+    {
+        // The view's labels are outlines, filled antialiased: from a baseline between two pixel
+        // rows the one-pixel bars of t and f spread over both at half strength, and the foot
+        // shot's label read "lop, 70.2 m above lhe fool". Set on a whole pixel, the text is the
+        // same ink, moved by whole pixels, wherever within a pixel its point falls.
+        auto inked = [](double dy) {
+            QImage image(240, 40, QImage::Format_RGB32);
+            image.fill(Qt::white);
+            QPainter p(&image);
+            p.setRenderHint(QPainter::Antialiasing);
+            QFont font = p.font();
+            font.setPixelSize(13);
+            p.setFont(font);
+            ab::ui::drawHaloText(p, QPointF(120.0, 20.0 + dy), "top, the foot", Qt::black, Qt::AlignHCenter);
+            p.end();
+            int top = image.height(), left = image.width();
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    if (qGray(image.pixel(x, y)) < 128) {
+                        top = std::min(top, y);
+                        left = std::min(left, x);
+                    }
+            return image.copy(left, top, 200, 20);
+        };
+        const QImage whole = inked(0.0);
+        for (const double dy : {0.25, 0.5, 0.75})
+            QVERIFY2(inked(dy) == whole, qPrintable(QString("moved by %1 px").arg(dy)));
     }
 
     void aLabelAtTheViewsEdgeIsMovedInWhole()

@@ -112,6 +112,10 @@ void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QCo
     else if (align & Qt::AlignHCenter)
         origin.rx() -= box.width() / 2.0;
     origin.ry() += fm.ascent() / 2.0 - 1.0; // vertically centred on `at`
+    // On a whole pixel: the outline is drawn unhinted and antialiased, and from a baseline
+    // between pixels the one-pixel bars of t and f spread over two rows at half strength
+    // ("lop, 70.2 m above lhe fool" in the foot shot).
+    origin = QPointF(std::round(origin.x()), std::round(origin.y()));
     QPainterPath path;
     path.addText(origin, p.font(), text);
     const double halo = std::max(3.0, fm.height() / 6.0);
