@@ -14,6 +14,7 @@
 #include "ui/theme/theme.h"
 #include "ui/theme/theme_style.h"
 #include "ui/view/scene_geometry.h"
+#include "ui/view/view_frame.h"
 
 #include <QAbstractAxis>
 #include <QApplication>
@@ -197,6 +198,34 @@ private slots:
                 ++checked;
             }
         QVERIFY(checked >= 2);
+    }
+
+    void theViewsLabelsStandSevenToOneOnAHaloOfTheViewsSide_data() { addThemeRows(); }
+    void theViewsLabelsStandSevenToOneOnAHaloOfTheViewsSide()
+    {
+        // A label is read from the back of a lecture hall: its text 7:1 against its halo. The
+        // halo is of the view's own side, dark on a dark view: a white one over black read as a
+        // pale box round grey text (stage 1's scale in high-contrast dark, 3.9:1 within it).
+        QFETCH(Theme, theme);
+        const QColor background = ab::ui::surfaceColours(theme).background;
+        std::vector<QColor> colours = {QColor(0x20, 0x20, 0x20), QColor(0x4b, 0x00, 0x82), QColor(Qt::red)};
+        for (const ab::SceneId scene : {ab::SceneId::Bounce1d, ab::SceneId::Box3d, ab::SceneId::Street})
+            for (const ab::ui::SceneLabel& l :
+                 ab::ui::buildSceneGeometry(ab::ui::layoutFor(ab::RunSpec(scene)), "m").labels)
+                colours.push_back(l.colour);
+        QVERIFY(colours.size() >= 10);
+        for (const QColor& colour : colours) {
+            const ab::ui::LabelInk ink = ab::ui::labelInk(colour, background);
+            QColor opaque = ink.halo;
+            opaque.setAlpha(255);
+            CHECK_CONTRAST("label on its halo", ink.text, opaque, 7.0);
+            // The halo as drawn, over the view: of the view's lightness, not a box on it.
+            const double a = ink.halo.alphaF();
+            const QColor over = QColor::fromRgbF(a * opaque.redF() + (1 - a) * background.redF(),
+                                                 a * opaque.greenF() + (1 - a) * background.greenF(),
+                                                 a * opaque.blueF() + (1 - a) * background.blueF());
+            QVERIFY2(ratio(over, background) < 1.5, qPrintable(why("halo over the view", over, background)));
+        }
     }
 
     void aCheckedButtonStandsApartAtThreeToOne_data() { addThemeRows(); }

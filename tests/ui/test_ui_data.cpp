@@ -170,7 +170,7 @@ private slots:
             QPainter p(&image);
             ab::ui::SceneGeometry unlabelled = g;
             unlabelled.labels.clear(); // the scale's numbers lie left of the ball; only the ball's label
-            ab::ui::paintSceneLabels(p, camera, size, unlabelled, l, ball, font);
+            ab::ui::paintSceneLabels(p, camera, size, unlabelled, l, ball, font, Qt::white);
         }
         const int row = int(std::lround(centre.y()));
         int first = -1;

@@ -43,7 +43,7 @@ QImage paintedLabels(const OrbitCamera& camera, QSize size, const SceneGeometry&
     QPainter painter(&image);
     QFont font;
     font.setPointSizeF(14.0);
-    paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font);
+    paintSceneLabels(painter, camera, size, geometry, SceneLayout{}, {}, font, Qt::white);
     painter.end();
     return image;
 }

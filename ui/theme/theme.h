@@ -5,6 +5,8 @@
 // eight colours stay apart under the common colour-vision deficiencies.
 #pragma once
 
+#include "contrast.h"
+
 #include <QColor>
 #include <QPalette>
 #include <QString>
@@ -28,13 +30,6 @@ QPalette themePalette(Theme theme);
 // The frame of an editable field (line edit, spin box, combo box): 3:1 against the
 // window and the field's base, so that a field never reads as a label.
 QColor fieldBorder(Theme theme);
-
-// WCAG 2.1 relative luminance of an sRGB colour, and the contrast ratio of two colours
-// (1 to 21). AA asks 4.5:1 for text, 3:1 for lines, icons and field borders.
-double relativeLuminance(const QColor& colour);
-double contrastRatio(const QColor& a, const QColor& b);
-// `colour`, its lightness moved away from `background` until their ratio is `ratio`.
-QColor withContrast(const QColor& colour, const QColor& background, double ratio);
 
 // The colours a chart or the 3D view draws its frame with.
 struct SurfaceColours {

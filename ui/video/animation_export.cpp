@@ -166,8 +166,8 @@ QImage AnimationFrames::frame(long long k)
         const QString text = QCoreApplication::translate("ab::ui::AnimationFrames", "t = %1 %2")
                                  .arg(QString::number(shown, 'f', decimals), timeUnit_);
         const int margin = font.pixelSize() / 2;
-        drawHaloText(p, QPointF(margin, margin + font.pixelSize() / 2.0), text, QColor(0x20, 0x20, 0x20),
-                     Qt::AlignLeft);
+        drawHaloText(p, QPointF(margin, margin + font.pixelSize() / 2.0), text, QColor(0x20, 0x20, 0x20), Qt::AlignLeft,
+                     request_.background);
     }
     out.convertTo(QImage::Format_RGB888);
     render_ += seconds(timer);

@@ -106,7 +106,7 @@ QImage OffscreenView::render(const std::vector<float>& xyz, const std::vector<QV
     QFont font;
     font.setPixelSize(std::max(11, size_.height() / 52));
     QPainter p(&image);
-    paintSceneLabels(p, camera_, size_, geometry_, layout_, xyz, font);
+    paintSceneLabels(p, camera_, size_, geometry_, layout_, xyz, font, background_);
     return image;
 }
 

@@ -279,16 +279,17 @@ void BallView::paintOverlay(QPainter& p)
 {
     QFont font = p.font();
     font.setPointSizeF(10.0 * scale_);
-    paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font,
+    paintSceneLabels(p, camera_, size(), geometry_, layout_, balls_, font, background_,
                      [&](const QVector3D& at) { return solids_ && solids_->hides(camera_.eye(), at); });
     if (!ghostLegend_.isEmpty()) // bottom right, in the ghosts' violet: clear of the axis labels at the top
         drawHaloText(p, QPointF(width() - 12, height() - 40 * scale_), ghostLegend_, QColor(0x4b, 0x00, 0x82),
-                     Qt::AlignRight);
+                     Qt::AlignRight, background_);
     if (!glError_.isEmpty())
-        drawHaloText(p, QPointF(12, 44 * scale_), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft);
+        drawHaloText(p, QPointF(12, 44 * scale_), tr("OpenGL error: %1").arg(glError_), Qt::red, Qt::AlignLeft,
+                     background_);
     if (keyFocus_)
         drawBottomHint(p, size(), tr("Arrow keys move the camera; Esc gives the keys back to the transport"),
-                       QColor(0x30, 0x30, 0x30));
+                       QColor(0x30, 0x30, 0x30), background_);
 }
 
 void BallView::setPresentationScale(double scale)

@@ -4,6 +4,7 @@
 #include "street_camera.h"
 
 #include "core/random.h"
+#include "ui/theme/contrast.h"
 
 #include <QPainterPath>
 
@@ -102,7 +103,18 @@ RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& lay
     return in;
 }
 
-void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align)
+LabelInk labelInk(const QColor& colour, const QColor& background)
+{
+    const bool dark = relativeLuminance(background) < 0.18; // as withContrast tells dark from light
+    const QColor halo = dark ? QColor(0, 0, 0) : QColor(255, 255, 255);
+    QColor text = withContrast(colour, halo, 7.0);
+    QColor veil = halo;
+    veil.setAlpha(220); // the scene shows faintly through the halo
+    return {text, veil};
+}
+
+void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align,
+                  const QColor& background)
 {
     const QFontMetricsF fm(p.font());
     const QRectF box = fm.boundingRect(text);
@@ -119,13 +131,14 @@ void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QCo
     QPainterPath path;
     path.addText(origin, p.font(), text);
     const double halo = std::max(3.0, fm.height() / 6.0);
-    p.setPen(QPen(QColor(255, 255, 255, 220), halo, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    const LabelInk ink = labelInk(colour, background);
+    p.setPen(QPen(ink.halo, halo, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     p.setBrush(Qt::NoBrush);
     p.drawPath(path);
-    p.fillPath(path, colour);
+    p.fillPath(path, ink.text);
 }
 
-void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour)
+void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour, const QColor& background)
 {
     const double room = size.width() - 24.0; // 12 px margins
     const QFontMetricsF asSet(p.font());
@@ -145,13 +158,13 @@ void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& 
     const double bottom = size.height() - 0.7 * fm.height(); // the last line's middle
     for (qsizetype k = 0; k < lines.size(); ++k)
         drawHaloText(p, QPointF(12.0, bottom - double(lines.size() - 1 - k) * fm.height()), lines[k], colour,
-                     Qt::AlignLeft);
+                     Qt::AlignLeft, background);
     p.restore();
 }
 
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
                       const SceneLayout& layout, const std::vector<float>& balls, const QFont& font,
-                      const std::function<bool(const QVector3D&)>& hidden)
+                      const QColor& background, const std::function<bool(const QVector3D&)>& hidden)
 {
     p.setRenderHint(QPainter::Antialiasing);
     p.setFont(font);
@@ -173,7 +186,7 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
             at.setY(at.y() - 0.5 * fm.height() - 2.0); // its text's middle, clear of the line
         at.setX(inside(at.x(), fm.horizontalAdvance(label.text) / 2.0 + 3.0, size.width()));
         at.setY(inside(at.y(), fm.height() / 2.0 + 3.0, size.height()));
-        drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter);
+        drawHaloText(p, at, label.text, label.colour, Qt::AlignHCenter, background);
     }
     // The vertical scene reads its height off the scale: label the ball with it, beside the
     // ball as drawn (its projected radius, or the smallest drawn size) and half a line clear.
@@ -184,8 +197,8 @@ void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const 
         const double radius =
             std::max(QLineF(at, rim).length(), double(smallestBallPixels(layout, size.height(), 1.0)));
         drawHaloText(p, at + QPointF(radius + 0.5 * QFontMetricsF(font).height(), 0.0),
-                     QStringLiteral("y = %1").arg(double(balls[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20),
-                     Qt::AlignLeft);
+                     QStringLiteral("y = %1").arg(double(balls[1]), 0, 'f', 1), QColor(0x20, 0x20, 0x20), Qt::AlignLeft,
+                     background);
     }
 }
 

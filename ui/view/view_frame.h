@@ -41,18 +41,30 @@ float footAsFloat(double xFoot);
 RenderInputs sceneRenderInputs(const OrbitCamera& camera, const SceneLayout& layout, QSize size, int selected,
                                const QColor& background, double scale = 1.0);
 
-// Text in `colour` with a white halo, readable over any part of the scene.
-void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align);
+// How a label in `colour` is drawn over a view of `background`: a white halo over a light
+// view, a black one over a dark view (white over black read as a pale box round grey text),
+// and the text's colour moved in lightness until it stands 7:1 against its halo (WCAG's AAA
+// for text: it is read from the back of a lecture hall).
+struct LabelInk {
+    QColor text, halo;
+};
+LabelInk labelInk(const QColor& colour, const QColor& background);
+
+// Text in `colour` with a halo (labelInk), readable over any part of a scene of `background`.
+void drawHaloText(QPainter& p, const QPointF& at, const QString& text, const QColor& colour, Qt::Alignment align,
+                  const QColor& background = Qt::white);
 
 // `text` along the bottom left of a view `size` large, in `colour` with a halo: on one line
 // where it fits, else a line for each of its "; " parts, the font made smaller where even
 // a part would not fit (lecture mode's large text in a narrow view).
-void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour);
+void drawBottomHint(QPainter& p, QSize size, const QString& text, const QColor& colour,
+                    const QColor& background = Qt::white);
 
-// The geometry's labels and, in the vertical scene, the ball's height beside it, in `font`.
-// A label whose point `hidden` says is behind something solid is not drawn.
+// The geometry's labels and, in the vertical scene, the ball's height beside it, in `font`,
+// over a view of `background`. A label whose point `hidden` says is behind something solid
+// is not drawn.
 void paintSceneLabels(QPainter& p, const OrbitCamera& camera, QSize size, const SceneGeometry& geometry,
                       const SceneLayout& layout, const std::vector<float>& balls, const QFont& font,
-                      const std::function<bool(const QVector3D&)>& hidden = {});
+                      const QColor& background, const std::function<bool(const QVector3D&)>& hidden = {});
 
 } // namespace ab::ui
