@@ -370,6 +370,14 @@ private slots:
         }
         cut.removeDuplicates();
         QVERIFY2(cut.isEmpty(), qPrintable(cut.join("\n")));
+        // The status bar's last reading ends clear of the window's right edge (in lecture mode
+        // at 1280x720 its "unit²/step²" touched the screen's edge).
+        const auto* energy = w.findChild<QLabel*>("statusEnergy");
+        QVERIFY(energy && energy->isVisible());
+        const int textEnd = energy->mapTo(&w, QPoint(0, 0)).x() + energy->contentsMargins().left() +
+                            energy->fontMetrics().horizontalAdvance(energy->text());
+        QVERIFY2(textEnd <= w.width() - 6,
+                 qPrintable(QString("%1 ends at %2 of %3").arg(energy->text()).arg(textEnd).arg(w.width())));
         // Every chart the stage shows is on some page.
         int onPages = 0;
         for (int page = 0; page < count; ++page) {

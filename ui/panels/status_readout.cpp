@@ -100,6 +100,7 @@ StatusReadout::StatusReadout(QStatusBar* bar) : QObject(bar)
     step_ = label("statusStep", 120);
     fps_ = label("statusFps", 70);
     energy_ = label("statusEnergy", 190);
+    energy_->setContentsMargins(8, 0, 8, 0); // the bar's last reading stands clear of the screen's edge
     step_->setToolTip(tr("Wall time of one simulation step"));
     fps_->setToolTip(tr("Frames drawn per second by the 3D view"));
     energyTip_ = tr("Kinetic plus potential energy, summed over the balls, with the height measured "
