@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The settings column on a long stage (the street's): a refused entry's reason stands under
 // its field, scrolled into sight; a wheel turned over a choice scrolls the column and leaves
-// the choice alone, which the keys or a click still change; Ctrl+E in a field exports.
+// the choice alone, which the keys or a click still change; Ctrl+E in a field exports; a
+// decimal comma is read as the point.
 #include "ui/main_window.h"
 #include "ui/panels/parameter_panel.h"
 #include "ui/sim/run_controller.h"
@@ -26,6 +27,31 @@ class UiSettingsColumn : public QObject {
     Q_OBJECT
 
 private slots:
+    void aDecimalCommaIsReadAsThePointAndNeverDropped()
+    {
+        // "9,81" typed into g: the comma was refused as a keystroke and g became 981, unseen.
+        // It is read as the decimal point and shown so; in a vector it still parts the
+        // components; in a count it is named, not dropped ("1,5" balls is no count).
+        MainWindow w;
+        w.show();
+        w.showScene(SceneId::Box3d);
+        QLineEdit* g = w.parameters()->field("g");
+        typeInto(g, "9,81");
+        QCOMPARE(g->text(), QString("9.81"));
+        QCOMPARE(w.controller().spec().params.real("g"), 9.81);
+        QLineEdit* p0 = w.parameters()->field("p0");
+        typeInto(p0, "5,6,7");
+        QCOMPARE(p0->text(), QString("5,6,7"));
+        QVERIFY2(w.parameters()->errorText().isEmpty(), qPrintable(w.parameters()->errorText()));
+        w.showScene(SceneId::ManyBalls);
+        const ab::ParamValues before = w.controller().spec().params;
+        QLineEdit* n = w.parameters()->field("n");
+        typeInto(n, "1,5");
+        QCOMPARE(n->text(), QString("1.5"));
+        QVERIFY2(w.parameters()->errorText().contains("1.5"), qPrintable(w.parameters()->errorText()));
+        QVERIFY(w.controller().spec().params == before); // nothing applied
+    }
+
     void aRefusedEntrysReasonIsShownUnderItsFieldInSight()
     {
         // The street's slope is far down a long panel: its reason stands right under it, in

@@ -19,18 +19,11 @@ const QString real = QStringLiteral("[+-]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][+-]?\\d+
 
 const QRegularExpression& patternOf(NumberKind kind)
 {
+    // A count takes what a real does: a point typed into it is named by the parser ("1.5" is no
+    // integer), where refused as a keystroke it vanished and 1.5 balls became 15.
     static const QRegularExpression realRe("\\A" + real + "\\z");
-    static const QRegularExpression integerRe(QStringLiteral("\\A[+-]?\\d+\\z"));
     static const QRegularExpression vectorRe("\\A" + real + "," + real + "," + real + "\\z");
-    switch (kind) {
-    case NumberKind::Integer:
-        return integerRe;
-    case NumberKind::Vector:
-        return vectorRe;
-    case NumberKind::Real:
-        break;
-    }
-    return realRe;
+    return kind == NumberKind::Vector ? vectorRe : realRe;
 }
 
 // The keys with Ctrl that edit a field's text everywhere: clipboard, undo, select all, and
@@ -61,6 +54,12 @@ QValidator::State NumberValidator::validate(QString& input, int&) const
 {
     if (input.isEmpty())
         return Acceptable;
+    // A decimal comma (Swedish, and half of Europe) is read as the point and shown so: refused
+    // as a keystroke, "9,81" became "981" unseen, g a hundred times too large. In a vector the
+    // comma parts the components. An integer's comma becomes a point too, so that "1,5" or
+    // "1,000" is named as no integer instead of applied as 15 or 1000.
+    if (kind_ != NumberKind::Vector)
+        input.replace(QLatin1Char(','), QLatin1Char('.'));
     // A partial match is a beginning of a number; Acceptable (not Intermediate) so that
     // Enter and leaving the field always hand the text on: the parser names what is wrong.
     const QRegularExpressionMatch m = patternOf(kind_).match(input, 0, QRegularExpression::PartialPreferCompleteMatch);
