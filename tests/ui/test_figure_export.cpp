@@ -429,6 +429,21 @@ private slots:
         QVERIFY(meta.out.rfind("# Amazeballs ", 0) == 0);
         QVERIFY(meta.out.find("# constant k = 0.8 (the report's: 0.9)\n") != std::string::npos);
         QVERIFY(meta.out.find("\nt,ball,x,y,z,vx,vy,vz\n") != std::string::npos);
+        // The street's chart data keeps the energy's sums and says that its chart draws them per
+        // ball; a trajectory, which has no energy columns, says nothing of them.
+        const Result street = cli({"run", "street", "--set", "n=20", "--steps", "2", "--meta"});
+        QCOMPARE(street.status, 0);
+        QVERIFY2(street.out.find("energy") == std::string::npos, street.out.substr(0, 2000).c_str());
+        QTemporaryDir dir;
+        const std::string csv = dir.filePath("street.csv").toStdString();
+        QCOMPARE(cli({"chart", "street", "--set", "n=20", "--steps", "2", "--chart", "energy", "--out",
+                      dir.filePath("e.png").toStdString(), "--data", csv})
+                     .status,
+                 0);
+        QFile data(QString::fromStdString(csv));
+        QVERIFY(data.open(QIODevice::ReadOnly));
+        QVERIFY(data.readAll().contains("# energy columns: sums over the 20 balls; the energy chart draws each divided "
+                                        "by 20, the mean per ball\n"));
     }
 };
 

@@ -110,7 +110,7 @@ std::vector<std::string> RunDescription::comments(const RunFacts& run, const Run
                       " (position and velocity columns; energy and momentum are of all balls)");
     else
         out.push_back("balls: " + std::to_string(balls) + " (the ball column counts from 0, as the contract's CSV)");
-    if (spec.scene == SceneId::Street)
+    if (spec.scene == SceneId::Street && what == "chart data") // a trajectory has no energy columns
         out.push_back("energy columns: sums over the " + std::to_string(balls) +
                       " balls; the energy chart draws each divided by " + std::to_string(balls) +
                       ", the mean per ball");
