@@ -133,9 +133,11 @@ void MainWindow::exportInteractively(ChartKind kind, ExportFormat format)
     switch (format) {
     case ExportFormat::Png:
     case ExportFormat::Svg:
-        filter = format == ExportFormat::Svg ? tr("SVG image (*.svg);;PDF document (*.pdf);;PNG image (*.png)")
-                                             : tr("PNG image (*.png);;PDF document (*.pdf);;SVG image (*.svg)");
-        suggested = base + (format == ExportFormat::Svg ? ".svg" : ".png");
+    case ExportFormat::Pdf:
+        filter = format == ExportFormat::Svg   ? tr("SVG image (*.svg);;PDF document (*.pdf);;PNG image (*.png)")
+                 : format == ExportFormat::Pdf ? tr("PDF document (*.pdf);;SVG image (*.svg);;PNG image (*.png)")
+                                               : tr("PNG image (*.png);;PDF document (*.pdf);;SVG image (*.svg)");
+        suggested = base + (format == ExportFormat::Svg ? ".svg" : format == ExportFormat::Pdf ? ".pdf" : ".png");
         break;
     case ExportFormat::Csv:
         filter = tr("CSV table (*.csv)");

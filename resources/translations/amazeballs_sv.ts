@@ -816,6 +816,10 @@
         <source>The charts shown: one page of the stage&apos;s charts</source>
         <translation>Diagrammen som visas: en sida av etappens diagram</translation>
     </message>
+    <message>
+        <source>Export this chart as PDF...</source>
+        <translation>Exportera diagrammet som PDF...</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::ExportOptionsDialog</name>
@@ -1129,6 +1133,10 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
     <message>
         <source>Street: follow the flood</source>
         <translation>Gatan: följ floden</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf);;SVG image (*.svg);;PNG image (*.png)</source>
+        <translation>PDF-dokument (*.pdf);;SVG-bild (*.svg);;PNG-bild (*.png)</translation>
     </message>
 </context>
 <context>

@@ -11,10 +11,14 @@
 #include "ui/charts/nice_ticks.h"
 #include "ui/panels/chart_panel.h"
 
+#include <QApplication>
 #include <QChartView>
+#include <QContextMenuEvent>
 #include <QGraphicsTextItem>
 #include <QLineSeries>
+#include <QMenu>
 #include <QTabBar>
+#include <QTimer>
 #include <QValueAxis>
 #include <QtTest>
 
@@ -188,6 +192,42 @@ private slots:
         panel.configure(ab::sceneInfo(SceneId::ManyBalls), 150, 0, 1000.0);
         QVERIFY(panel.chartView(ChartKind::Activity)->isHidden());
         QVERIFY(!panel.chartShown(ChartKind::Activity));
+    }
+
+    void aChartsMenuOffersPdfForAReportBesidePngSvgAndCsv()
+    {
+        // The right-click menu offered PNG, SVG and CSV: a report's vector figure was reached
+        // only by typing ".pdf" into the file dialog.
+        using ab::ui::ExportFormat;
+        ab::ui::ChartPanel panel;
+        panel.resize(600, 800);
+        panel.configure(ab::sceneInfo(ab::SceneId::Box3d), 1, 0, 60.0);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        std::vector<std::pair<ab::ui::ChartKind, ExportFormat>> asked;
+        connect(&panel, &ab::ui::ChartPanel::exportRequested,
+                [&](ab::ui::ChartKind kind, ExportFormat format) { asked.emplace_back(kind, format); });
+        QStringList offered;
+        QTimer::singleShot(0, [&] {
+            QWidget* popup = QApplication::activePopupWidget();
+            auto* menu = qobject_cast<QMenu*>(popup);
+            if (!menu)
+                return;
+            for (QAction* a : menu->actions())
+                if (!a->isSeparator())
+                    offered << a->text();
+            for (QAction* a : menu->actions())
+                if (a->text().contains("PDF"))
+                    a->trigger();
+            menu->close();
+        });
+        QWidget* viewport = panel.chartView(ab::ui::ChartKind::Velocity)->viewport();
+        QContextMenuEvent event(QContextMenuEvent::Mouse, QPoint(50, 50), viewport->mapToGlobal(QPoint(50, 50)));
+        QApplication::sendEvent(viewport, &event);
+        QCOMPARE(offered, (QStringList{"Export this chart as PNG...", "Export this chart as SVG...",
+                                       "Export this chart as PDF...", "Export the chart data as CSV..."}));
+        QCOMPARE(asked.size(), std::size_t(1));
+        QVERIFY(asked[0].first == ab::ui::ChartKind::Velocity && asked[0].second == ExportFormat::Pdf);
     }
 
     void stackedChartsPutOneTimeAtOneX()

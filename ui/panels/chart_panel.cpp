@@ -427,6 +427,9 @@ bool ChartPanel::eventFilter(QObject* watched, QEvent* event)
                            [this, kind] { emit exportRequested(kind, ExportFormat::Png); });
             menu.addAction(tr("Export this chart as SVG..."), this,
                            [this, kind] { emit exportRequested(kind, ExportFormat::Svg); });
+            // A lab report's figure: vector, with its fonts, at the size the options choose.
+            menu.addAction(tr("Export this chart as PDF..."), this,
+                           [this, kind] { emit exportRequested(kind, ExportFormat::Pdf); });
             menu.addSeparator();
             menu.addAction(tr("Export the chart data as CSV..."), this,
                            [this, kind] { emit exportRequested(kind, ExportFormat::Csv); });

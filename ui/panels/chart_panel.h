@@ -25,7 +25,7 @@ class QVBoxLayout;
 
 namespace ab::ui {
 
-enum class ExportFormat { Png, Svg, Csv };
+enum class ExportFormat { Png, Svg, Pdf, Csv };
 
 class ChartPanel : public QWidget {
     Q_OBJECT
