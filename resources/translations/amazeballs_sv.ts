@@ -151,14 +151,6 @@
         <translation>Gatans delsteg följer dess snabbaste boll, så ett mindre steg gör dem inte kortare; detta är vad dess kontaktpass lämnade där bollar trycker mot varandra, mest i en hög flera bollar djup: färre bollar ger en lägre hög.</translation>
     </message>
     <message>
-        <source>The report&apos;s bounce limit stopped the ball at t = %1: after more than %2 bounces its position and velocity are set to zero (Appendix A)</source>
-        <translation>Rapportens studsgräns stoppade bollen vid t = %1: efter fler än %2 studsar sätts dess position och hastighet till noll (bilaga A)</translation>
-    </message>
-    <message>
-        <source>The report&apos;s bounce limit stopped the ball at t = %1: after more than %2 floor and wall contacts its position and velocity are set to zero (Appendix B)</source>
-        <translation>Rapportens studsgräns stoppade bollen vid t = %1: efter fler än %2 golv- och väggkontakter sätts dess position och hastighet till noll (bilaga B)</translation>
-    </message>
-    <message>
         <source>The report&apos;s counter stopped both balls at t = %1: after more than %2 contacts and swaps both velocities are set to zero, and the positions go on from them (Appendix C)</source>
         <translation>Rapportens räknare stoppade båda bollarna vid t = %1: efter fler än %2 kontakter och byten sätts båda hastigheterna till noll, och positionerna räknas vidare från dem (bilaga C)</translation>
     </message>
@@ -169,6 +161,14 @@
     <message>
         <source>The angular momentum of ball %1 about its contact point changed by %2% at the floor at t = %3 (friction at the contact point cannot change it)</source>
         <translation>Rörelsemängdsmomentet för boll %1 kring dess kontaktpunkt ändrades med %2% vid golvet vid t = %3 (friktion i kontaktpunkten kan inte ändra det)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s bounce limit put the ball at rest on the floor at t = %1: after more than %2 bounces its position and velocity are set to zero (Appendix A)</source>
+        <translation>Rapportens studsgräns lade bollen i vila på golvet vid t = %1: efter fler än %2 studsar sätts dess position och hastighet till noll (bilaga A)</translation>
+    </message>
+    <message>
+        <source>The report&apos;s bounce limit put the ball at rest at the origin, the box&apos;s corner, at t = %1: after more than %2 floor and wall contacts its position and velocity are set to zero (Appendix B)</source>
+        <translation>Rapportens studsgräns lade bollen i vila i origo, lådans hörn, vid t = %1: efter fler än %2 golv- och väggkontakter sätts dess position och hastighet till noll (bilaga B)</translation>
     </message>
 </context>
 <context>

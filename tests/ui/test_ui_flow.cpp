@@ -361,6 +361,11 @@ private slots:
         QTRY_VERIFY2(w.readout()->warningText().contains("below the floor"), qPrintable(w.readout()->warningText()));
         QVERIFY(w.readout()->warningText().contains("Appendix C"));
         QVERIFY(w.readout()->warningText().contains("0.000982 m"));
+        // Stage 2's limit moves the ball to the origin: its x and z fall to 0 in the charts, and
+        // the headline says where the ball went, not only that it stopped.
+        w.showScene(SceneId::Box3d);
+        QVERIFY(stepOn(w, 4000));
+        QTRY_VERIFY2(w.readout()->warningText().contains("at the origin"), qPrintable(w.readout()->warningText()));
     }
 
     // At 1280x720 in lecture mode the bar held "150 of 150 balls lie on the floor with a

@@ -180,12 +180,14 @@ QString HealthText::halted(const SceneInfo& scene, const ParamValues& params, do
     };
     switch (scene.id) {
     case SceneId::Bounce1d:
-        return tr("The report's bounce limit stopped the ball at t = %1: after more than %2 bounces its position and "
-                  "velocity are set to zero (Appendix A)")
+        return tr("The report's bounce limit put the ball at rest on the floor at t = %1: after more than %2 bounces "
+                  "its position and velocity are set to zero (Appendix A)")
             .arg(at, limit("max_bounces"));
     case SceneId::Box3d:
-        return tr("The report's bounce limit stopped the ball at t = %1: after more than %2 floor and wall contacts "
-                  "its position and velocity are set to zero (Appendix B)")
+        // Said in the headline: the charts' x and z fall to 0 there, and the ball stands in the
+        // box's corner, not where its path ends.
+        return tr("The report's bounce limit put the ball at rest at the origin, the box's corner, at t = %1: after "
+                  "more than %2 floor and wall contacts its position and velocity are set to zero (Appendix B)")
             .arg(at, limit("max_bounces"));
     case SceneId::TwoBalls:
         return tr("The report's counter stopped both balls at t = %1: after more than %2 contacts and swaps both "
