@@ -62,6 +62,7 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
     floor_ = spec.scene == SceneId::ManyBalls ? -spec.params.real("box") / 2.0 : 0.0;
     world_ = physical::worldOf(sim);
     turns_ = ballsTurn(spec);
+    oneCounter_ = spec.scene == SceneId::Bounce1d || spec.scene == SceneId::Box3d || spec.scene == SceneId::TwoBalls;
     if (world_) {
         mass_ = world_->mass;
     } else if (spec.model == ModelKind::Physical && spec.scene == SceneId::Bounce1d &&
@@ -92,7 +93,7 @@ ConservationMeter::ConservationMeter(const Simulation& sim)
 ConservationSample ConservationMeter::measure(const State& s) const
 {
     ConservationSample out = world_ ? measureWorld(s) : footX_ ? measureStreet(s) : measureEqualMasses(s);
-    out.impacts = s.impacts;
+    out.impacts = oneCounter_ ? s.count : s.impacts;
     return out;
 }
 

@@ -11,7 +11,9 @@
 //     many-balls, physical model).
 //  2. Potential energy is m g (y - floor): the floor is y = 0 (stages 1-3, and the street's
 //     foot) or the box's bottom face y = -L/2 (stage 4), as the 3D view draws it.
-//  3. Impacts are counted by the models in State::impacts (many-balls, both models).
+//  3. Impacts are counted by the models: in State::impacts (many-balls, both models, and the
+//     street), in the scene's one counter State::count in stages 1-3 (the report's contacts,
+//     which its bounce limit counts, and the physical model's impacts).
 #pragma once
 
 #include "../physical/spring_contact.h"
@@ -40,7 +42,7 @@ struct ConservationSample {
     EnergyParts energy;
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero(); // sum of m v, per axis
     long long moving = 0;                               // balls faster than movingSpeed()
-    long long impacts = 0;                              // State::impacts: impacts since the start
+    long long impacts = 0;                              // impacts since the start (note 3)
 };
 
 class ConservationMeter {
@@ -75,6 +77,7 @@ private:
     double spinInertia_ = 0.0;               // q r^2 of many-balls' turning balls (docs/spin.md); 0 elsewhere
     std::optional<double> footX_;            // the street's open foot (street::hasLeft); none elsewhere
     bool turns_ = false;
+    bool oneCounter_ = false; // stages 1-3: impacts are State::count (note 3)
 };
 
 // Whether the balls of a run can turn (docs/spin.md): the physical model with rough

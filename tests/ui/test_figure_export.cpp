@@ -294,6 +294,20 @@ private slots:
         QCOMPARE(first[header.indexOf("compare_vz [m/s]")].toDouble(), 15.0);
         // The report's first step, vy = -g dt = -0.0982, in shortest round-trip form.
         QCOMPARE(lines[2].split(',')[header.indexOf("vy [m/s]")], QString("-0.09820000000000001"));
+        // The impacts column counts the report's contacts (its bounce counter, Appendix B); it
+        // read 0 throughout. Falling from y0 = 20 by the semi-implicit step, y_n = y0 - g dt^2
+        // n (n + 1) / 2 first reaches the floor at n (n + 1) >= 2 y0 / (g dt^2) = 40733.2, so n
+        // = 202 (t = 2.02 s); the step from there finds the contact: 1 from t = 2.03 s on.
+        const int impacts = header.indexOf("impacts [1]");
+        QVERIFY(impacts > 0);
+        int firstContact = -1;
+        for (int row = 1; row < lines.size() && firstContact < 0; ++row)
+            if (lines[row].split(',')[impacts] != "0")
+                firstContact = row;
+        QVERIFY(firstContact > 0);
+        const QStringList contact = lines[firstContact].split(',');
+        QCOMPARE(contact[impacts], QString("1"));
+        QVERIFY2(std::abs(contact[0].toDouble() - 2.03) < 1e-9, qPrintable(contact[0]));
     }
 
     void theDifferenceChartIsTheRunMinusTheComparisonAtSampleTimes()
