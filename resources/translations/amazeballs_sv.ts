@@ -375,7 +375,7 @@
     <name>RunDescription</name>
     <message>
         <source>Stage %1 (%2)</source>
-        <translation>Steg %1 (%2)</translation>
+        <translation>Etapp %1 (%2)</translation>
     </message>
     <message>
         <source>, report model (the report&apos;s own step and impact rules)</source>
