@@ -69,8 +69,10 @@ void checkChartPath(const std::string& path)
 {
     const std::string suffix = QFileInfo(QString::fromStdString(path)).suffix().toLower().toStdString();
     if (suffix != "png" && suffix != "svg")
-        throw InputError("--chart: " + printableInput(path) + ": unknown image type '" + printableInput(suffix) +
-                         "' (use .png or .svg)");
+        throw InputError("--chart: " + printableInput(path) +
+                         (suffix.empty() ? std::string(": no image type")
+                                         : ": unknown image type '" + printableInput(suffix) + "'") +
+                         " (use .png or .svg)");
     checkWritable(path);
 }
 

@@ -159,6 +159,8 @@ private slots:
         QTest::newRow("missing chart") << QStringList{} << "missing --chart";
         QTest::newRow("image type") << QStringList{"--chart", "position", "--ext", "jpg"}
                                     << "unknown image type 'jpg' (use .png, .svg or .pdf)";
+        QTest::newRow("no image type") << QStringList{"--chart", "position", "--ext", ""}
+                                       << "out.: no image type (use .png, .svg or .pdf)";
         QTest::newRow("ball out of range")
             << QStringList{"--chart", "position", "--ball", "2"} << "--ball: 2 is outside";
         QTest::newRow("bad parameter") << QStringList{"--chart", "position", "--set", "k=7"} << "k: 7 is outside";

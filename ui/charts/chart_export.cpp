@@ -145,8 +145,10 @@ void checkFigurePath(const QString& path, const std::string& what)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != "png" && suffix != "svg" && suffix != "pdf")
-        throw InputError((what.empty() ? "" : what + ": ") + printableInput(pathText(path)) + ": unknown image type '" +
-                         printableInput(suffix.toStdString()) + "' (use .png, .svg or .pdf)");
+        throw InputError((what.empty() ? "" : what + ": ") + printableInput(pathText(path)) +
+                         (suffix.isEmpty() ? std::string(": no image type")
+                                           : ": unknown image type '" + printableInput(suffix.toStdString()) + "'") +
+                         " (use .png, .svg or .pdf)");
 }
 
 void writeFigureFile(const QString& path, const FigureOptions& options, const QString& title, const ScenePainter& paint)
