@@ -2,7 +2,8 @@
 // The settings column on a long stage (the street's): a refused entry's reason stands under
 // its field, scrolled into sight; a wheel turned over a choice scrolls the column and leaves
 // the choice alone, which the keys or a click still change; Ctrl+E in a field exports; a
-// decimal comma is read as the point.
+// comma in a number is never dropped: named in English, the decimal comma in Swedish.
+#include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/parameter_panel.h"
 #include "ui/sim/run_controller.h"
@@ -27,21 +28,30 @@ class UiSettingsColumn : public QObject {
     Q_OBJECT
 
 private slots:
-    void aDecimalCommaIsReadAsThePointAndNeverDropped()
+    void cleanup() { ab::ui::installLanguage(ab::ui::Language::English); }
+
+    void aCommaInANumberIsNeverDropped()
     {
         // "9,81" typed into g: the comma was refused as a keystroke and g became 981, unseen.
-        // It is read as the decimal point and shown so; in a vector it still parts the
-        // components; in a count it is named, not dropped ("1,5" balls is no count).
+        // In English a comma may group thousands ("2,000"): it stays and the entry is named,
+        // nothing applied. In Swedish it is the decimal comma: read as the point and shown so.
+        // In a vector it parts the components; a count names "1,5" instead of taking 15.
         MainWindow w;
         w.show();
         w.showScene(SceneId::Box3d);
         QLineEdit* g = w.parameters()->field("g");
         typeInto(g, "9,81");
-        QCOMPARE(g->text(), QString("9.81"));
-        QCOMPARE(w.controller().spec().params.real("g"), 9.81);
+        QCOMPARE(g->text(), QString("9,81"));
+        QVERIFY2(w.parameters()->errorText().contains("'9,81' is not a number"),
+                 qPrintable(w.parameters()->errorText()));
+        QCOMPARE(w.controller().spec().params.real("g"), 9.82); // nothing applied
         QLineEdit* p0 = w.parameters()->field("p0");
         typeInto(p0, "5,6,7");
         QCOMPARE(p0->text(), QString("5,6,7"));
+        ab::ui::installLanguage(ab::ui::Language::Swedish);
+        typeInto(g, "9,81");
+        QCOMPARE(g->text(), QString("9.81"));
+        QCOMPARE(w.controller().spec().params.real("g"), 9.81);
         QVERIFY2(w.parameters()->errorText().isEmpty(), qPrintable(w.parameters()->errorText()));
         w.showScene(SceneId::ManyBalls);
         const ab::ParamValues before = w.controller().spec().params;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "number_field.h"
 
+#include "ui/i18n/language.h"
+
 #include <QEvent>
 #include <QKeyEvent>
 #include <QKeySequence>
@@ -54,12 +56,16 @@ QValidator::State NumberValidator::validate(QString& input, int&) const
 {
     if (input.isEmpty())
         return Acceptable;
-    // A decimal comma (Swedish, and half of Europe) is read as the point and shown so: refused
-    // as a keystroke, "9,81" became "981" unseen, g a hundred times too large. In a vector the
-    // comma parts the components. An integer's comma becomes a point too, so that "1,5" or
-    // "1,000" is named as no integer instead of applied as 15 or 1000.
-    if (kind_ != NumberKind::Vector)
+    // A comma outside a vector was refused as a keystroke: "9,81" became "981" unseen, g a
+    // hundred times too large. In Swedish it is the decimal comma, read as the point and shown
+    // so; in English it may group thousands ("2,000"), so it stays and the parser names the
+    // text ("g: '9,81' is not a number") rather than the field guessing. In a vector the comma
+    // parts the components.
+    if (kind_ != NumberKind::Vector && input.contains(QLatin1Char(','))) {
+        if (installedLanguage() != Language::Swedish)
+            return Acceptable;
         input.replace(QLatin1Char(','), QLatin1Char('.'));
+    }
     // A partial match is a beginning of a number; Acceptable (not Intermediate) so that
     // Enter and leaving the field always hand the text on: the parser names what is wrong.
     const QRegularExpressionMatch m = patternOf(kind_).match(input, 0, QRegularExpression::PartialPreferCompleteMatch);

@@ -17,9 +17,9 @@ enum class NumberKind { Real, Integer, Vector };
 
 // Acceptable: the text is a number of its kind or the beginning of one ("", "-", "1e",
 // "2,"); Invalid: no number starts so. The whole text is judged by the parser on Enter.
-// Outside a vector a comma is taken for a decimal comma and becomes a point; an integer
-// field takes a real's characters too, so that the parser names "1.5" instead of a dropped
-// keystroke turning it into 15.
+// Outside a vector a comma is, in Swedish, the decimal comma and becomes a point; in English
+// it is kept for the parser to name. An integer field takes a real's characters too, so that
+// the parser names "1.5" instead of a dropped keystroke turning it into 15.
 class NumberValidator : public QValidator {
     Q_OBJECT
 public:
