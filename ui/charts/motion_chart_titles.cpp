@@ -16,12 +16,6 @@ QString squared(const QString& unit)
     return unit == "1" ? unit : unit + QString::fromUtf8("\u00b2");
 }
 
-// An axis title with its unit: "E/m (m²/s²)".
-QString withUnit(const QString& name, const QString& unit)
-{
-    return QStringLiteral("%1 (%2)").arg(name, unit);
-}
-
 } // namespace
 
 void MotionChart::chooseLines(int sceneAxes, const ChartUnits& units)
@@ -91,9 +85,7 @@ void MotionChart::nameChart(const SceneInfo& scene, int ball, const ChartUnits& 
                               tr("p/m, all balls (%1)").arg(momentumUnit), tr("p/m (%1)").arg(momentumUnit)}
                 : QStringList{tr("Total momentum, all balls (kg %1)").arg(momentumUnit),
                               tr("p, all balls (kg %1)").arg(momentumUnit), tr("p (kg %1)").arg(momentumUnit)};
-        // The axis carries its unit as the position's does ("position (m)"), not the title only.
-        valueAxis_->setTitleText(
-            withUnit(units.perUnitMass ? tr("p/m") : tr("p"), units.perUnitMass ? momentumUnit : "kg " + momentumUnit));
+        valueAxis_->setTitleText(units.perUnitMass ? tr("p/m") : tr("p"));
         break;
     case ChartKind::Activity:
         titleForms_ = {tr("Moving balls and impacts")};
@@ -135,7 +127,6 @@ void MotionChart::nameEnergy(const SceneInfo& scene, const ChartUnits& units, co
     // 10,000 balls sum to millions of m^2/s^2, an axis of "8000000" a lecture hall cannot
     // read: its chart draws the mean a ball (ChartUnits::energyMeanOver), as its status bar.
     const bool one = scene.ballCount == 1;
-    const QString axisUnit = units.perUnitMass ? energyUnit : "kg " + energyUnit;
     if (units.energyMeanOver > 0) {
         titleForms_ =
             units.perUnitMass
@@ -143,7 +134,7 @@ void MotionChart::nameEnergy(const SceneInfo& scene, const ChartUnits& units, co
                               tr("E/m, mean per ball (%1)").arg(energyUnit), tr("mean E/m (%1)").arg(energyUnit)}
                 : QStringList{tr("Energy, mean per ball (kg %1)").arg(energyUnit),
                               tr("E, mean per ball (kg %1)").arg(energyUnit), tr("mean E (kg %1)").arg(energyUnit)};
-        valueAxis_->setTitleText(withUnit(units.perUnitMass ? tr("mean E/m") : tr("mean E"), axisUnit));
+        valueAxis_->setTitleText(units.perUnitMass ? tr("mean E/m") : tr("mean E"));
     } else if (units.perUnitMass)
         titleForms_ =
             one ? QStringList{tr("Energy per unit mass (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
@@ -156,8 +147,8 @@ void MotionChart::nameEnergy(const SceneInfo& scene, const ChartUnits& units, co
                                         tr("E, sum over all balls (kg %1)").arg(energyUnit),
                                         tr("\u03a3 E (kg %1)").arg(energyUnit)};
     if (units.energyMeanOver <= 0)
-        valueAxis_->setTitleText(withUnit(
-            units.perUnitMass ? (one ? tr("E/m") : tr("\u03a3 E/m")) : (one ? tr("E") : tr("\u03a3 E")), axisUnit));
+        valueAxis_->setTitleText(units.perUnitMass ? (one ? tr("E/m") : tr("\u03a3 E/m"))
+                                                   : (one ? tr("E") : tr("\u03a3 E")));
     names[0] = units.spins ? tr("translation") : tr("kinetic");
     names[1] = tr("potential");
     names[2] = tr("total");
