@@ -16,6 +16,7 @@
 #include "ui/tools/study_dialog.h"
 
 #include <QAbstractButton>
+#include <QAbstractScrollArea>
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
@@ -193,6 +194,16 @@ void checkChart(const QChartView* view, QStringList& cut)
                    .arg(view->chart()->plotArea().height());
 }
 
+// A widget the user sees part of. A scroll area's own region is covered whole by its viewport
+// (a chart view's too): what shows of it is its viewport's region.
+bool isShown(const QWidget* w)
+{
+    if (!w->isVisible())
+        return false;
+    const auto* area = qobject_cast<const QAbstractScrollArea*>(w);
+    return !(area ? area->viewport()->visibleRegion() : w->visibleRegion()).isEmpty();
+}
+
 // Every visible text-bearing widget under `root` (a window or a dialog).
 QStringList cutTexts(QWidget* root)
 {
@@ -200,7 +211,7 @@ QStringList cutTexts(QWidget* root)
     QList<QWidget*> all = root->findChildren<QWidget*>();
     all.prepend(root);
     for (QWidget* w : all) {
-        if (!w->isVisible() || w->visibleRegion().isEmpty())
+        if (!isShown(w))
             continue;
         if (auto* label = qobject_cast<QLabel*>(w))
             checkLabel(label, cut);
