@@ -213,10 +213,10 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
                                                       &track.left()};
         if (meanOver_ <= 0)
             return *parts[line];
-        rate_.resize(parts[line]->size()); // the mean a ball: the sum over the n balls / n
-        std::transform(parts[line]->begin(), parts[line]->end(), rate_.begin(),
+        derived_.resize(parts[line]->size()); // the mean a ball: the sum over the n balls / n
+        std::transform(parts[line]->begin(), parts[line]->end(), derived_.begin(),
                        [n = double(meanOver_)](double sum) { return sum / n; });
-        return rate_;
+        return derived_;
     }
     case ChartKind::Spin:
         return track.w(line);
@@ -229,13 +229,13 @@ const std::vector<double>& MotionChart::column(const MotionTrack& track, int lin
             return track.moving();
         // Impacts counted over the last 1/100 of the planned run: long enough to hold
         // several impacts at the report's 150 balls, short enough to show how they die out.
-        rate_ = impactRate(track, tEnd_ / 100.0);
-        return rate_;
+        derived_ = impactRate(track, tEnd_ / 100.0);
+        return derived_;
     case ChartKind::FootRate:
         // Counted over the last 1/60 of the planned run (half a second of the street's
         // 30 s): the flood's front passes a foot in a few seconds.
-        rate_ = passingRate(track.t(), track.pastFoot(line), tEnd_ / 60.0);
-        return rate_;
+        derived_ = passingRate(track.t(), track.pastFoot(line), tEnd_ / 60.0);
+        return derived_;
     case ChartKind::Speeds:
         return track.speed(line);
     }

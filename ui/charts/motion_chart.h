@@ -191,7 +191,7 @@ private:
     double lo_ = 0.0, hi_ = 0.0;
     bool haveRange_ = false;
     double rateHi_ = 0.0;
-    std::vector<double> rate_; // impacts per unit of time, from the last track shown (or a mean a ball)
+    std::vector<double> derived_; // a line worked out from the track: a rate, or the energy a ball
     std::vector<double> diffT_;
     std::array<std::vector<double>, 3> diffRun_;
     int insetLeft_ = 0, insetRight_ = 0;

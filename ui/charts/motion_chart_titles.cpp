@@ -127,28 +127,30 @@ void MotionChart::nameEnergy(const SceneInfo& scene, const ChartUnits& units, co
     // 10,000 balls sum to millions of m^2/s^2, an axis of "8000000" a lecture hall cannot
     // read: its chart draws the mean a ball (ChartUnits::energyMeanOver), as its status bar.
     const bool one = scene.ballCount == 1;
-    if (units.energyMeanOver > 0) {
-        titleForms_ =
-            units.perUnitMass
-                ? QStringList{tr("Energy per unit mass, mean per ball (%1)").arg(energyUnit),
-                              tr("E/m, mean per ball (%1)").arg(energyUnit), tr("mean E/m (%1)").arg(energyUnit)}
-                : QStringList{tr("Energy, mean per ball (kg %1)").arg(energyUnit),
-                              tr("E, mean per ball (kg %1)").arg(energyUnit), tr("mean E (kg %1)").arg(energyUnit)};
-        valueAxis_->setTitleText(units.perUnitMass ? tr("mean E/m") : tr("mean E"));
-    } else if (units.perUnitMass)
-        titleForms_ =
-            one ? QStringList{tr("Energy per unit mass (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)}
-                : QStringList{tr("Energy per unit mass, sum over all balls (%1)").arg(energyUnit),
-                              tr("E/m, sum over all balls (%1)").arg(energyUnit),
-                              tr("\u03a3 E/m, all balls (%1)").arg(energyUnit), tr("\u03a3 E/m (%1)").arg(energyUnit)};
-    else
-        titleForms_ = one ? QStringList{tr("Energy (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)}
-                          : QStringList{tr("Energy, sum over all balls (kg %1)").arg(energyUnit),
-                                        tr("E, sum over all balls (kg %1)").arg(energyUnit),
-                                        tr("\u03a3 E (kg %1)").arg(energyUnit)};
-    if (units.energyMeanOver <= 0)
-        valueAxis_->setTitleText(units.perUnitMass ? (one ? tr("E/m") : tr("\u03a3 E/m"))
-                                                   : (one ? tr("E") : tr("\u03a3 E")));
+    if (units.energyMeanOver > 0 && units.perUnitMass) {
+        titleForms_ = {tr("Energy per unit mass, mean per ball (%1)").arg(energyUnit),
+                       tr("E/m, mean per ball (%1)").arg(energyUnit), tr("mean E/m (%1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("mean E/m"));
+    } else if (units.energyMeanOver > 0) {
+        titleForms_ = {tr("Energy, mean per ball (kg %1)").arg(energyUnit),
+                       tr("E, mean per ball (kg %1)").arg(energyUnit), tr("mean E (kg %1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("mean E"));
+    } else if (units.perUnitMass && one) {
+        titleForms_ = {tr("Energy per unit mass (%1)").arg(energyUnit), tr("E/m (%1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("E/m"));
+    } else if (units.perUnitMass) {
+        titleForms_ = {tr("Energy per unit mass, sum over all balls (%1)").arg(energyUnit),
+                       tr("E/m, sum over all balls (%1)").arg(energyUnit),
+                       tr("\u03a3 E/m, all balls (%1)").arg(energyUnit), tr("\u03a3 E/m (%1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("\u03a3 E/m"));
+    } else if (one) {
+        titleForms_ = {tr("Energy (kg %1)").arg(energyUnit), tr("E (kg %1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("E"));
+    } else {
+        titleForms_ = {tr("Energy, sum over all balls (kg %1)").arg(energyUnit),
+                       tr("E, sum over all balls (kg %1)").arg(energyUnit), tr("\u03a3 E (kg %1)").arg(energyUnit)};
+        valueAxis_->setTitleText(tr("\u03a3 E"));
+    }
     names[0] = units.spins ? tr("translation") : tr("kinetic");
     names[1] = tr("potential");
     names[2] = tr("total");
