@@ -8,12 +8,14 @@
 // The offscreen platform's screen is AB_TEST_SCREEN ("1280x720", default 1920x1080),
 // given to Qt through its configuration file (Qt 6.4's offscreen plugin reads one). With
 // AB_TEST_X11 set it runs on the X server it is started in (xvfb-run, a screen of that size).
+#include "ui/export_options_dialog.h"
 #include "ui/i18n/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/chart_panel.h"
 #include "ui/shell/window_shell.h"
 #include "ui/tools/stability_dialog.h"
 #include "ui/tools/study_dialog.h"
+#include "ui/video/animation_dialog.h"
 
 #include "support/cut_text.h"
 
@@ -237,6 +239,9 @@ private slots:
         std::vector<std::unique_ptr<QDialog>> dialogs;
         dialogs.push_back(std::make_unique<ab::ui::StudyDialog>(w.controller().spec(), &w));
         dialogs.push_back(std::make_unique<ab::ui::StabilityDialog>(w.scene(), &w));
+        dialogs.push_back(std::make_unique<ab::ui::ExportOptionsDialog>(ab::ui::ChartExportChoice{}, true, &w));
+        dialogs.push_back(
+            std::make_unique<ab::ui::AnimationDialog>(0.0, 30.0, 1.0, "s", ab::ui::AnimationChoice{}, &w));
         for (const auto& dialog : dialogs) {
             dialog->show();
             settle();
