@@ -107,7 +107,7 @@ QLayout* AnimationDialog::buildSizeRow(QSize initial)
     auto* custom = new QHBoxLayout;
     custom->addWidget(size_);
     custom->addWidget(width_);
-    custom->addWidget(new QLabel(QStringLiteral("x")));
+    custom->addWidget(new QLabel(QStringLiteral("\u00d7")));
     custom->addWidget(height_);
     return custom;
 }
