@@ -2149,6 +2149,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>Kinetic plus potential energy per unit mass, with the height measured from the street&apos;s foot, and what the balls that left at the foot took with them: the mean over the %1 balls, as the energy chart draws it. All balls together: %2 %3</source>
         <translation>Kinetisk plus potentiell energi per massenhet, med höjden räknad från gatans fot, och det som bollarna som lämnat vid foten tog med sig: medelvärdet över de %1 bollarna, som energidiagrammet ritar det. Alla bollar tillsammans: %2 %3</translation>
     </message>
+    <message>
+        <source>&lt; 0.1 fps</source>
+        <translation>&lt; 0.1 bilder/s</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 bilder/s</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::StreetCameraBar</name>

@@ -327,7 +327,7 @@ private slots:
         QCOMPARE(QKeySequence(Qt::Key_Space).toString(QKeySequence::NativeText), QString("Space"));
     }
 
-    void frameRateSaysOneBildAndTwoBilder()
+    void frameRateSaysOneBildAndTwoBilderAndTenthsBelowTen()
     {
         // The status bar's frame rate in Swedish: "1 bild/s", "30 bilder/s" (it read "1 bilder/s").
         const auto shown = [](Language language, double fps) {
@@ -341,10 +341,16 @@ private slots:
                     texts << label->text();
             return texts.join(QLatin1Char('|'));
         };
-        QCOMPARE(shown(Language::Swedish, 1.2), QStringLiteral("1 bild/s"));
+        QCOMPARE(shown(Language::Swedish, 1.02), QStringLiteral("1 bild/s"));
         QCOMPARE(shown(Language::Swedish, 30.4), QStringLiteral("30 bilder/s"));
-        QCOMPARE(shown(Language::English, 1.2), QStringLiteral("1 fps"));
+        QCOMPARE(shown(Language::English, 1.02), QStringLiteral("1 fps"));
         QCOMPARE(shown(Language::English, 30.4), QStringLiteral("30 fps"));
+        // Under 10 a second, a tenth: a view drawing a frame a step of 1.2 s read "0 fps".
+        QCOMPARE(shown(Language::English, 0.83), QStringLiteral("0.8 fps"));
+        QCOMPARE(shown(Language::Swedish, 0.42), QStringLiteral("0.4 bilder/s"));
+        QCOMPARE(shown(Language::English, 7.25), QStringLiteral("7.3 fps"));
+        QCOMPARE(shown(Language::English, 0.03), QStringLiteral("< 0.1 fps"));
+        QCOMPARE(shown(Language::English, 9.97), QStringLiteral("10 fps"));
     }
 
     void localeChoosesTheLanguage()

@@ -375,10 +375,20 @@ void StatusReadout::placeDetails()
 
 void StatusReadout::setFrameRate(double fps)
 {
-    // %n: Swedish has "1 bild/s" and "2 bilder/s".
-    fps_->setText(fps < 0.0    ? tr("no 3D view")
-                  : fps == 0.0 ? tr("\u2013 fps")
-                               : tr("%n fps", nullptr, static_cast<int>(std::lround(fps))));
+    // %n: Swedish has "1 bild/s" and "2 bilder/s". Below 10 a frame a second shows a tenth:
+    // the view of 250,000 balls draws a frame for each step of over a second, and "0 fps"
+    // read as a view that had stopped.
+    const double tenths = std::round(fps * 10.0) / 10.0;
+    if (fps < 0.0)
+        fps_->setText(tr("no 3D view"));
+    else if (fps == 0.0)
+        fps_->setText(tr("\u2013 fps"));
+    else if (tenths < 0.1)
+        fps_->setText(tr("< 0.1 fps"));
+    else if (tenths < 10.0 && tenths != std::floor(tenths))
+        fps_->setText(tr("%1 fps").arg(tenths, 0, 'f', 1));
+    else
+        fps_->setText(tr("%n fps", nullptr, static_cast<int>(std::lround(fps))));
     fitText(fps_);
 }
 
