@@ -90,12 +90,14 @@ private slots:
         engine.resumeFrom(77);
         QTRY_COMPARE(engine.status().steps, 77LL);
         engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame& current) {
-            QVERIFY(rec.track().steps().back() < 77); // what came after is dropped
+            // What came after is dropped: the track ends at the state shown, step 77's.
+            QCOMPARE(rec.track().steps().back(), 77LL);
             QVERIFY(rec.frames().back().step < 77);
             QCOMPARE(current.step, 77LL);
         });
         stepTo(engine, 90);
-        expectTrackIsAFreshRun(engine, spec, 89); // step 90's state is final after its step
+        // The track reaches the state shown, step 90's, final only after its step.
+        expectTrackIsAFreshRun(engine, spec, 90);
         QVERIFY(!engine.status().finished);
     }
 
@@ -107,10 +109,14 @@ private slots:
         engine.resumeFrom(0);
         QTRY_COMPARE(engine.status().steps, 0LL);
         QCOMPARE(engine.status().t, 0.0);
-        engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame&) { QVERIFY(rec.empty()); });
+        engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame&) {
+            QVERIFY(rec.frames().empty());                // no state final yet
+            QCOMPARE(rec.track().size(), std::size_t(1)); // the start, shown
+            QCOMPARE(rec.track().steps().back(), 0LL);
+        });
         stepTo(engine, 41);
         engine.read([&](const ab::ui::Recording& rec, const ab::ui::Frame&) {
-            const std::vector<ab::State> fresh = testing::record(spec, 40);
+            const std::vector<ab::State> fresh = testing::record(spec, 41);
             QVERIFY(rec.track().p(2).back() == fresh.back().p(2, 1));
         });
     }
@@ -227,7 +233,7 @@ private slots:
             QTRY_VERIFY(engine.status().steps > before);
         }
         QCOMPARE(spec.threads, 1);
-        expectTrackIsAFreshRun(engine, spec, steps - 1);
+        expectTrackIsAFreshRun(engine, spec, steps);
         const ab::State fresh = testing::record(spec, steps).back();
         QVERIFY(fresh.impacts > 0); // the balls have met by then: the threads share contact passes
         engine.read([&](const ab::ui::Recording&, const ab::ui::Frame& current) {

@@ -152,7 +152,7 @@ private slots:
         const ab::RunSpec spec = ab::variantOf(w.controller().spec(), physicalSymplectic);
         const std::vector<ab::State> fresh = testing::record(spec, n);
         const ab::ui::MotionTrack track = trackOf(*w.controller().comparisonEngine());
-        QCOMPARE(track.size(), std::size_t(n)); // each state recorded once the step from it is taken
+        QCOMPARE(track.size(), std::size_t(n + 1)); // the start and each step's state, the last the one shown
         for (std::size_t i = 0; i < track.size(); ++i) {
             QCOMPARE(track.t()[i], fresh[i].t);
             QCOMPARE(track.p(1)[i], fresh[i].p(1, 0)); // bit for bit: the same rules from the same state
@@ -266,7 +266,7 @@ private slots:
         const int y = int(header.indexOf("compare_y [unit]"));
         QVERIFY(y > 0);
         QVERIFY(header.contains("compare_energy_total [unit^2/step^2]"));
-        QCOMPARE(lines.size(), 31); // the header and 30 recorded states
+        QCOMPARE(lines.size(), 32); // the header, the start and the 30 steps' states
         const ab::ui::MotionTrack other = trackOf(*w.controller().comparisonEngine());
         for (int i = 1; i < lines.size(); ++i) {
             const QStringList cells = lines[i].split(',');

@@ -259,7 +259,11 @@ private slots:
         QVERIFY(!engine.status().playing);
         // Free fall from rest, eq 2.15: v = -g t exactly for the report's scheme.
         engine.read([](const ab::ui::Recording& rec, const ab::ui::Frame& current) {
-            QCOMPARE(rec.track().size(), std::size_t(2));
+            // The start, step 1 and the state shown, step 2's (the paused run's charts and
+            // their CSV reach the moment on screen).
+            QCOMPARE(rec.track().size(), std::size_t(3));
+            QCOMPARE(rec.track().steps().back(), 2LL);
+            QCOMPARE(rec.track().v(1).back(), -0.0982 * 2);
             QVERIFY(std::abs(current.v[1] - float(-0.0982 * 2)) < 1e-6f);
         });
     }

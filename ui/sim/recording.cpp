@@ -48,8 +48,22 @@ Recording::Recording(const SceneLayout& layout, const ConservationMeter& meter, 
     maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 2); // two at least; the start is always kept
 }
 
+void Recording::showCurrent(long long step, const State& s, const ConservationSample& scene)
+{
+    if (current_ >= 0)
+        track_.truncateFrom(current_);
+    current_ = -1;
+    if (!track_.empty() && step <= track_.steps().back())
+        return; // recorded already (the last state of a finished run)
+    addState(track_, step, s, trackedBall_, scene, layout_.street ? &*layout_.street : nullptr);
+    current_ = step;
+}
+
 void Recording::add(long long step, const State& s)
 {
+    if (current_ >= 0)
+        track_.truncateFrom(current_); // the sample shown, final now (showCurrent)
+    current_ = -1;
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
     const StreetSample street = layout_.street ? measureStreet(*layout_.street, s) : StreetSample{}; // two more
     addState(track_, step, s, trackedBall_, scene, layout_.street ? &*layout_.street : nullptr, &street);
@@ -67,6 +81,7 @@ void Recording::add(long long step, const State& s)
 
 void Recording::truncateFrom(long long step)
 {
+    current_ = -1;
     track_.truncateFrom(step);
     const auto from =
         std::lower_bound(frames_.begin(), frames_.end(), step, [](const Frame& f, long long s) { return f.step < s; });
@@ -93,6 +108,7 @@ void Recording::setTrackedBall(int ball)
         return;
     trackedBall_ = ball;
     track_.clear();
+    current_ = -1; // the caller shows its current state again
     for (const Frame& f : frames_) {
         const auto i = static_cast<std::size_t>(3 * ball);
         const Eigen::Vector3d p(f.p[i], f.p[i + 1], f.p[i + 2]);

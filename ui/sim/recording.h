@@ -65,6 +65,13 @@ public:
     // Adds final state `s` of step `step`; steps come in increasing order.
     void add(long long step, const State& s);
 
+    // The state on screen, `s` of step `step` (with `scene`, its ConservationSample), before
+    // the next step makes it final: a step may still correct the state it starts from
+    // (RunEngine::advance), so it is added only then. Until then its sample ends the track, so
+    // that the charts, their data and figures reach the moment shown (a paused run's CSV
+    // ended one step before it); add() of the same step puts the final sample in its place.
+    void showCurrent(long long step, const State& s, const ConservationSample& scene);
+
     // Forgets every state of step `step` and later: the run forks back to that step and
     // records its new course from there, the balls turning on from the orientations of the
     // last frame kept before it.
@@ -100,6 +107,7 @@ private:
     std::vector<Frame> frames_;
     MotionTrack track_;
     BallOrientations orientations_; // of the last state added, in double precision
+    long long current_ = -1;        // the step whose sample ends the track until it is added (showCurrent)
 };
 
 } // namespace ab::ui

@@ -118,6 +118,7 @@ void RunEngine::setTrackedBall(int ball)
     if (ball < 0 || ball >= current_.balls())
         throw std::logic_error("setTrackedBall: no such ball");
     recording_.setTrackedBall(ball);
+    recording_.showCurrent(status_.steps, state_, current_.scene);
     ++status_.version;
 }
 
@@ -320,6 +321,7 @@ void RunEngine::publishCurrent()
 {
     current_ = makeFrame(status_.steps, state_, meter_);
     current_.q = recording_.orientationsAt(state_); // state_ is recorded at the next step
+    recording_.showCurrent(status_.steps, state_, current_.scene);
     status_.t = state_.t;
     status_.energy = current_.scene.energy.total();
 }
