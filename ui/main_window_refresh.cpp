@@ -117,7 +117,13 @@ void MainWindow::refreshReadings(const EngineStatus& status)
         const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
         readout_->show(status, shown ? shown : &current, viewT && shown);
     });
-    if (view_ && fpsClock_.elapsed() >= 1000) {
+    if (view_ && !status.playing) {
+        // Paused, the view draws only when moved: its rate says nothing of the run ("0.5 fps",
+        // "2 fps" by turns). A dash until the run plays again.
+        readout_->setFrameRate(0.0);
+        fpsClock_.restart();
+        framesSinceFps_ = 0;
+    } else if (view_ && fpsClock_.elapsed() >= 1000) {
         readout_->setFrameRate(1000.0 * framesSinceFps_ / double(fpsClock_.restart()));
         framesSinceFps_ = 0;
     }

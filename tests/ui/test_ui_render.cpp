@@ -17,6 +17,8 @@
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QLabel>
+#include <QRegularExpression>
 #include <QtTest>
 
 #include <set>
@@ -178,6 +180,21 @@ private slots:
             for (int x = 0; x < image.width(); x += 4)
                 colours.insert(image.pixel(x, y));
         QVERIFY2(colours.size() > 100, qPrintable(QString::number(colours.size())));
+    }
+
+    void theFrameRateIsShownWhilePlayingAndADashWhilePaused()
+    {
+        // Paused, the view draws only when moved: "0.5 fps" and "2 fps" by turns said nothing.
+        MainWindow& w = open(SceneId::ManyBalls);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto* fps = w.findChild<QLabel*>("statusFps");
+        QVERIFY(fps);
+        w.controller().play();
+        QTRY_VERIFY_WITH_TIMEOUT(fps->text().contains(QRegularExpression("^[0-9.<]")), 10000);
+        w.controller().pause();
+        QTRY_COMPARE(fps->text(), QString::fromUtf8("\u2013 fps"));
+        QTest::qWait(1500); // a second and more of the clock: still the dash
+        QCOMPARE(fps->text(), QString::fromUtf8("\u2013 fps"));
     }
 
     void theReportsBounceLimitEndsThePathWhereItStoppedTheBall()
