@@ -138,6 +138,7 @@ ChartExportChoice ExportOptionsDialog::choice() const
     }
     }
     c.options.dpi = dpi_->value();
+    checkChartRoom(c.options, tr("size").toStdString());
     c.caption = caption_->isChecked();
     c.cursor = cursor_->isChecked();
     return c;

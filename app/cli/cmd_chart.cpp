@@ -79,6 +79,7 @@ ui::FigureOptions readFigureOptions(Parsed& args)
         ui::checkDpi(*dpi);
         options.dpi = int(*dpi);
     }
+    ui::checkChartRoom(options, size || !(width || height) ? "--size" : "--width/--height");
     return options;
 }
 

@@ -53,6 +53,7 @@ int figureCommand(Parsed& args, std::ostream&, std::ostream&)
                                     dpi ? std::optional<int>(int(*dpi)) : std::nullopt};
         if (QFileInfo(QString::fromStdString(*path)).suffix().toLower() == "png")
             (void)options->pngPixels();
+        ui::checkChartRoom(*options, size ? "--size" : "--dpi");
     }
     checkWritable(*path);
 

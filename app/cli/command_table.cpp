@@ -47,14 +47,15 @@ std::vector<OptionSpec> with(std::vector<OptionSpec> first, const std::vector<Op
     return first;
 }
 
-std::vector<OptionSpec> figureSizeOptions()
+// The size options of `chart` and `figure`, with the defaults of the command.
+std::vector<OptionSpec> figureSizeOptions(const char* sizeDefault, const char* widthDefault, const char* heightDefault)
 {
     return {
-        {"size", "report-column|report-full|slide|WxH|WxHmm", "the size: a preset, pixels or millimetres",
-         "1200x800 pixels"},
+        {"size", "report-column|report-full|slide|WxH|WxHmm",
+         "the size: a preset, pixels or millimetres; a chart needs 70x50mm (397x283 px at 144 dpi)", sizeDefault},
         {"dpi", "N", "dots per inch of a size in millimetres", "the size preset's"},
-        {"width", "W", "the width in pixels, 200 to 8000 (instead of --size)", "1200"},
-        {"height", "H", "the height in pixels, 150 to 8000 (instead of --size)", "800"},
+        {"width", "W", "the width in pixels, 200 to 8000 (instead of --size)", widthDefault},
+        {"height", "H", "the height in pixels, 150 to 8000 (instead of --size)", heightDefault},
     };
 }
 
@@ -95,7 +96,8 @@ CommandSpec chartCommandSpec()
                            false, V::File},
                           {"ball", "B", "the ball charted, 1 for the first", "1"},
                       }),
-                 with(figureSizeOptions(),
+                 with(figureSizeOptions("report-column: 85x64mm, 1004x756 px in PNG", "1200 beside --height",
+                                        "800 beside --width"),
                       {
                           {"caption", "", "print the settings under the chart"},
                           {"compare", "MODEL[:INTEGRATOR[:IMPACTS]]",
@@ -227,7 +229,7 @@ std::vector<CommandSpec> makeTable()
                  "constants.",
                  with({{"out", "FILE.png|FILE.svg|FILE.pdf", "the image to write (its type from its name)", "", false,
                         V::File}},
-                      figureSizeOptions()),
+                      figureSizeOptions("1200x900 pixels", "1200 beside --height", "900 beside --width")),
                  figureCommand});
     t.push_back(videoCommandSpec());
     t.push_back({"help",

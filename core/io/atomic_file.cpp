@@ -128,8 +128,11 @@ std::string writeFailure(const std::string& name, int error)
     case EPIPE:
         why = "the reader has gone";
         break;
-    default:
-        why = std::strerror(error);
+    case EBADF:
+        why = "it is closed";
+        break;
+    default: // the system's words alone, not twice ("Bad file descriptor (Bad file descriptor)")
+        return name + ": not written: " + std::strerror(error);
     }
     return name + ": not written: " + why + " (" + std::strerror(error) + ")";
 }

@@ -155,6 +155,11 @@ void addTargetCases(std::vector<Case>& c)
     stdoutSummary.name = "full standard output: run --summary";
     stdoutSummary.args.push_back("--summary");
     c.push_back(stdoutSummary);
+    Case stdoutClosed{
+        "closed standard output: run names it once", {"run", "bounce1d", "--model", "physical", "--steps", "5"}, {}, 4};
+    stdoutClosed.stdoutPath.clear();
+    stdoutClosed.says = "standard output: not written: it is closed (Bad file descriptor)";
+    c.push_back(stdoutClosed);
     Case stdoutList{"full standard output: list", {"list"}, {}, 4};
     stdoutList.stdoutPath = "/dev/full";
     stdoutList.says = "standard output";

@@ -111,12 +111,16 @@ pid_t spawn(const Case& c, const fs::path& dir, const fs::path& errPath)
         ::setrlimit(RLIMIT_FSIZE, &limit);
     }
     const int in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open(c.stdoutPath.c_str(), O_WRONLY);
+    const bool closed = c.stdoutPath.empty(); // `>&-`: the program starts with no standard output
+    const int out = closed ? 0 : ::open(c.stdoutPath.c_str(), O_WRONLY);
     const int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in < 0 || out < 0 || err < 0)
         ::_exit(126);
     ::dup2(in, 0);
-    ::dup2(out, 1);
+    if (closed)
+        ::close(1);
+    else
+        ::dup2(out, 1);
     ::dup2(err, 2);
     ::execv(argv[0], argv.data());
     ::_exit(127);

@@ -32,12 +32,12 @@ struct Case {
     std::vector<std::string> untouched;               // files whose content and mode must stay
     std::vector<std::string> absent;                  // files that must not exist afterwards
     std::function<std::string(const fs::path& dir, const std::string& err)> check; // "" or a problem
-    bool window = false; // runs the window program, without a display (DISPLAY unset, platform xcb)
-    std::string stdoutPath = "/dev/null";
-    long fileSizeLimit = -1; // bytes, setrlimit(RLIMIT_FSIZE); -1 none
-    int signal = 0;          // sent once the child is ready
-    std::string readyFile;   // ready when a file whose name starts so exists; "" when busy on the CPU
-    double readyCpu = 0.0;   // and then when it has used this many more CPU seconds (inside its work)
+    bool window = false;                  // runs the window program, without a display (DISPLAY unset, platform xcb)
+    std::string stdoutPath = "/dev/null"; // "" closes it (`>&-`)
+    long fileSizeLimit = -1;              // bytes, setrlimit(RLIMIT_FSIZE); -1 none
+    int signal = 0;                       // sent once the child is ready
+    std::string readyFile;                // ready when a file whose name starts so exists; "" when busy on the CPU
+    double readyCpu = 0.0;                // and then when it has used this many more CPU seconds (inside its work)
 };
 
 struct Outcome {

@@ -367,6 +367,15 @@ private slots:
                                    << "--size: 'a4' is not a size";
         QTest::newRow("zero") << QStringList{"--size", "0x600"} << "png"
                               << "--size: '0x600' is empty";
+        QTest::newRow("too few px") << QStringList{"--size", "1x1"} << "png"
+                                    << "--size: 1x1 at 144 dpi (0.2x0.2mm) is too small for a chart, its text at 8 pt "
+                                       "(at least 70x50mm, 397x283 px at 144 dpi)";
+        QTest::newRow("too few mm") << QStringList{"--size", "60x45mm"} << "pdf"
+                                    << "--size: 60x45mm is too small for a chart";
+        QTest::newRow("too dense") << QStringList{"--size", "1004x756", "--dpi", "600"} << "png"
+                                   << "--size: 1004x756 at 600 dpi (43x32mm) is too small";
+        QTest::newRow("too few px wide") << QStringList{"--width", "300", "--height", "300"} << "png"
+                                         << "--width/--height: 300x300 at 144 dpi (53x53mm) is too small";
         QTest::newRow("too many px") << QStringList{"--size", "20001x600"} << "png"
                                      << "larger than 20000 px";
         QTest::newRow("too many mm") << QStringList{"--size", "2001x100mm"} << "pdf"

@@ -134,4 +134,26 @@ QSize FigureOptions::pngPixels() const
     return QSize(std::max(1, int(w)), std::max(1, int(h)));
 }
 
+void checkChartRoom(const FigureOptions& options, std::string_view what)
+{
+    const QSizeF mm = options.millimetres();
+    if (mm.width() >= kChartMinWidthMm && mm.height() >= kChartMinHeightMm)
+        return;
+    const auto whole = [](double x) {
+        if (x >= 10.0)
+            return std::to_string(int(std::round(x)));
+        std::string tenths = std::to_string(int(std::round(10.0 * x))); // "0.2" for a pixel's size
+        return (tenths.size() < 2 ? "0" : tenths.substr(0, tenths.size() - 1)) + "." + tenths.back();
+    };
+    std::string at = options.size.name;
+    if (options.size.pixels) // the pixels at the dpi make the physical size
+        at += " at " + std::to_string(options.effectiveDpi()) + " dpi (" + whole(mm.width()) + "x" +
+              whole(mm.height()) + "mm)";
+    throw InputError(std::string(what) + ": " + at + " is too small for a chart, its text at 8 pt (at least " +
+                     whole(kChartMinWidthMm) + "x" + whole(kChartMinHeightMm) + "mm, " +
+                     whole(kChartMinWidthMm / mmPerInch * options.effectiveDpi()) + "x" +
+                     whole(kChartMinHeightMm / mmPerInch * options.effectiveDpi()) + " px at " +
+                     std::to_string(options.effectiveDpi()) + " dpi)");
+}
+
 } // namespace ab::ui

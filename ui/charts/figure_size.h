@@ -55,4 +55,10 @@ struct FigureOptions {
     QSize pngPixels() const;
 };
 
+// A chart's text is set at 8 pt for its physical size (FigureOptions::millimetres): below
+// 70 x 50 mm its axis title is cut (60 x 45 mm cut "position (unit)"; "1x1" px was a blank
+// image). Throws InputError naming `what` and the size where it is smaller.
+inline constexpr double kChartMinWidthMm = 70.0, kChartMinHeightMm = 50.0;
+void checkChartRoom(const FigureOptions& options, std::string_view what = "--size");
+
 } // namespace ab::ui
