@@ -6,6 +6,7 @@
 #include "commands.h"
 
 #include "interrupt.h"
+#include "run_progress.h"
 #include "run_setup.h"
 
 #include "../../core/io/atomic_file.h"
@@ -86,7 +87,11 @@ void chooseGlPlatform()
 
 class Progress {
 public:
-    Progress(std::ostream& err, bool quiet, std::string name) : err_(err), quiet_(quiet), name_(std::move(name)) {}
+    // On a terminal only, as run's: a script reading stderr got a line of "\r"s per percent.
+    Progress(std::ostream& err, bool quiet, std::string name)
+        : err_(err), quiet_(quiet || !RunProgress::isTerminal(err)), name_(std::move(name))
+    {
+    }
     bool operator()(long long done, long long total)
     {
         throwIfInterrupted();

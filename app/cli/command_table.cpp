@@ -109,27 +109,28 @@ CommandSpec chartCommandSpec()
 
 CommandSpec videoCommandSpec()
 {
-    return {"video",
-            "SCENE",
-            false,
-            V::Scene,
-            "the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL)",
-            "Runs SCENE and encodes its 3D view as an animation, headless. Exit status 5 when there is no OpenGL "
-            "to draw with.",
-            with(runOptions(),
-                 {
-                     {"out", "FILE.mp4|FILE.webm|FILE.gif", "the animation to write (its format from its name)", "",
-                      false, V::File},
-                     {"size", "WxH|720p|1080p", "the frame size in pixels", "720p"},
-                     {"fps", "F", "frames per second, 1 to 120", "30"},
-                     {"from", "S", "start at this time, in the scene's time unit", "the run's start"},
-                     {"to", "S", "end at this time, in the scene's time unit", "the run's end"},
-                     {"speed", "X", "simulated time per second of video, as a multiple of real time", "1"},
-                     {"charts", "", "draw the scene's charts beside the view"},
-                     {"ball", "B", "the ball followed, 1 for the first", "1"},
-                     {"quiet", "", "no progress on standard error"},
-                 }),
-            videoCommand};
+    return {
+        "video",
+        "SCENE",
+        false,
+        V::Scene,
+        "the run as an animation, headless (OpenGL: Xvfb or Mesa's EGL)",
+        "Runs SCENE and encodes its 3D view as an animation, headless. Exit status 5 when there is no OpenGL "
+        "to draw with.",
+        with(runOptions(),
+             {
+                 {"out", "FILE.mp4|FILE.webm|FILE.gif", "the animation to write (its format from its name)", "", false,
+                  V::File},
+                 {"size", "WxH|720p|1080p", "the frame size in pixels", "720p"},
+                 {"fps", "F", "frames per second, 1 to 120", "30"},
+                 {"from", "S", "start at this time, in the scene's time unit", "the run's start"},
+                 {"to", "S", "end at this time, in the scene's time unit", "the run's end"},
+                 {"speed", "X", "simulated time per second of video, as a multiple of real time", "1"},
+                 {"charts", "", "draw the scene's charts beside the view"},
+                 {"ball", "B", "the ball followed, 1 for the first", "1"},
+                 {"quiet", "", "no progress and no closing line on standard error (progress shows on a terminal only)"},
+             }),
+        videoCommand};
 }
 
 CommandSpec studyCommandSpec()
