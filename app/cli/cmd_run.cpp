@@ -27,6 +27,8 @@ struct Summary {
     double haltT = -1.0;
     double maxSpeed = 0.0;
     long long contacts = 0;
+    long long contactsAtHalt = -1; // the counter when the report's limit stopped the motion
+    long long haltIndex = -1;
     long long impacts = 0; // the many-balls engines' and the street's, each contact once
     bool perBall = false;  // the contacts are stage 4's counters, one per ball
 
@@ -47,8 +49,15 @@ struct Summary {
         previousT = s.t;
         contacts = std::max(contacts, counted);
         impacts = std::max(impacts, s.impacts);
-        if (s.halted && haltT < 0.0)
+        // The limit marks the state the stopping step starts from (it zeroes that state's
+        // velocities); the contact that passed the limit is counted in the state after it.
+        if (s.halted && haltT < 0.0) {
             haltT = s.t;
+            haltIndex = index;
+            contactsAtHalt = counted;
+        } else if (haltIndex >= 0 && index == haltIndex + 1) {
+            contactsAtHalt = counted;
+        }
         if (s.size() > 0)
             maxSpeed = std::max(maxSpeed, s.v.colwise().norm().maxCoeff());
     }
@@ -70,7 +79,14 @@ struct Summary {
             out << "first contact: in the step from t = " << readable(firstContactT) << " " << info.timeUnit << "\n";
         // The report's counters (a scene's `count`, stage 4's bounces per ball); the engines
         // that count impacts instead (many-balls' physical model, the street) say so.
-        if (contacts > 0 || impacts == 0)
+        // After the report's limit stops the motion its counter runs on, a contact each step for
+        // a ball left below the floor or two balls touching at rest (Appendix C): the count that
+        // means something is the one at the stop (two-balls: 101 there, 5184 after 60 s).
+        if (contactsAtHalt >= 0 && contacts > contactsAtHalt)
+            out << "contacts counted: " << contactsAtHalt << " up to the stop at t = " << readable(haltT) << " "
+                << info.timeUnit << " (the report's counter runs on while the balls lie at rest: " << contacts
+                << " by the end)\n";
+        else if (contacts > 0 || impacts == 0)
             out << "contacts counted: " << contacts << (perBall ? " (the balls' bounce counters, summed)" : "") << "\n";
         if (impacts > 0)
             out << "impacts: " << impacts << " (ball on ball and on "

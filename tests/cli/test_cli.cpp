@@ -128,6 +128,40 @@ private slots:
         QVERIFY2(r.err.empty(), r.err.c_str()); // healthy
     }
 
+    // After the report's limit stops stage 3, its counter runs on (a contact a step for the
+    // balls touching at rest): --summary gives the count at the stop, the same for a run of 40 s
+    // or 60 s, past the limit of 100 by the stopping step's contacts only (it printed 1184
+    // and 5184, and more with max_events=10 than with 100).
+    void summaryGivesTheCountAtTheReportsStopNotTheCounterRunningOn()
+    {
+        const auto atStop = [](const std::vector<std::string>& more) {
+            std::vector<std::string> args{"run", "two-balls", "--summary"};
+            args.insert(args.end(), more.begin(), more.end());
+            const Result r = cli(args);
+            long long counted = -1, end = -1;
+            const std::size_t at = r.out.find("contacts counted: ");
+            if (r.status != 0 || at == std::string::npos ||
+                std::sscanf(r.out.c_str() + at,
+                            "contacts counted: %lld up to the stop at t = 34.58 s (the report's counter runs on "
+                            "while the balls lie at rest: %lld by the end)",
+                            &counted, &end) != 2)
+                return std::pair<long long, long long>{-1, -1};
+            return std::pair{counted, end};
+        };
+        const auto [at40, end40] = atStop({"--steps", "4000"});
+        const auto [at60, end60] = atStop({"--steps", "6000"});
+        QCOMPARE(at40, at60);
+        QVERIFY2(at40 > 100 && at40 <= 103,
+                 qPrintable(QString::number(at40))); // max_events = 100, 3 contacts a step at most
+        QVERIFY(end60 > end40 && end40 > at40);
+        const Result ten = cli({"run", "two-balls", "--summary", "--steps", "6000", "--set", "max_events=10"});
+        long long atTen = -1;
+        const std::size_t k = ten.out.find("contacts counted: ");
+        QVERIFY2(k != std::string::npos, ten.out.c_str());
+        QCOMPARE(std::sscanf(ten.out.c_str() + k, "contacts counted: %lld up to the stop", &atTen), 1);
+        QVERIFY2(atTen > 10 && atTen <= 13, ten.out.c_str());
+    }
+
     // --summary counts the street's impacts as its engine does (the street keeps no report
     // counters: it said "contacts counted: 0" while 300 balls landed on the road).
     void summaryCountsTheStreetsImpactsAsItsEngineDoes()
