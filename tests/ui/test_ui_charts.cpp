@@ -401,6 +401,9 @@ private slots:
             peak = std::max(peak, p.y());
         QVERIFY(peak > 0.0); // the balls reach the floor (50 units below) within 1000 frames
         QVERIFY(chart.rateAxis()->max() >= peak);
+        // The grid is the left axis's alone: two scales' lines fell between each other.
+        QVERIFY(chart.valueAxis()->isGridLineVisible());
+        QVERIFY(!chart.rateAxis()->isGridLineVisible());
     }
 
     void chartCsvHasUnitsTheShownAxesEverySampleAndOneBasedBalls()

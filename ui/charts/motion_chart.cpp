@@ -68,6 +68,9 @@ MotionChart::MotionChart(ChartKind kind, const ChartLook& look)
             s->attachAxis(rateAxis_);
         }
         rateAxis_->setLabelFormat("%g");
+        // One set of grid lines, the left axis's: the right's (0-180 beside 0-160) fell between them.
+        rateAxis_->setGridLineVisible(false);
+        rateAxis_->setMinorGridLineVisible(false);
         rateAxis_->setLinePenColor(lineColour(kind, 1));
         rateAxis_->setLabelsColor(lineColour(kind, 1).darker(120));
         valueAxis_->setLinePenColor(lineColour(kind, 0));
