@@ -40,6 +40,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         connect(panel, SIGNAL(editDone()), this, SLOT(handKeysBack()));
     connect(parameters_, &ParameterPanel::reportValuesRequested, runOptions_, &RunOptionsPanel::clearRefusals);
     fpsClock_.start();
+    paceClock_.start();
     panelTimer_.setInterval(20); // a part a tick: about a frame apart under software OpenGL
     connect(&panelTimer_, &QTimer::timeout, this, &MainWindow::refreshPanelPart);
     turntable_.setInterval(16);

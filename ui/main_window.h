@@ -17,6 +17,7 @@
 #include <QMainWindow>
 #include <QTimer>
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -151,6 +152,11 @@ private:
     bool lectureKeys_ = false;
     QElapsedTimer fpsClock_;
     int framesSinceFps_ = 0;
+    // The run's time against the wall clock over the last two seconds of play: the speed it
+    // keeps (followKeptSpeed), as (wall seconds, run time) samples.
+    void followKeptSpeed(const EngineStatus& status);
+    QElapsedTimer paceClock_;
+    std::deque<std::pair<double, double>> pace_;
     QTimer turntable_;
     std::optional<SceneId> framedScene_;
     QString lastDirectory_;

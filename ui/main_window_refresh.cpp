@@ -6,6 +6,7 @@
 #include "i18n/core_text.h"
 #include "panels/status_readout.h"
 #include "panels/transport_bar.h"
+#include "sim/playback_rate.h"
 #include "view/ball_view.h"
 
 #include <algorithm>
@@ -117,6 +118,7 @@ void MainWindow::refreshReadings(const EngineStatus& status)
         const Frame* shown = viewT ? rec.frameAt(*viewT) : &current;
         readout_->show(status, shown ? shown : &current, viewT && shown);
     });
+    followKeptSpeed(status);
     if (view_ && !status.playing) {
         // Paused, the view draws only when moved: its rate says nothing of the run ("0.5 fps",
         // "2 fps" by turns). A dash until the run plays again.
@@ -159,6 +161,26 @@ void MainWindow::refreshView(const Recording& rec, const Frame& current, std::op
     if (n > 0 && (n - 1) % stride != 0)
         trace.emplace_back(float(track.p(0)[n - 1]), float(track.p(1)[n - 1]), float(track.p(2)[n - 1]));
     view_->setTrace(std::move(trace));
+}
+
+void MainWindow::followKeptSpeed(const EngineStatus& status)
+{
+    // Kept speed = (run time gained / wall time) / the run time of a real second at 1x
+    // (playbackRate), over the last two seconds of play; unknown before one and a half.
+    const double now = double(paceClock_.elapsed()) / 1000.0;
+    if (!status.playing || status.finished || (!pace_.empty() && status.t < pace_.back().second)) {
+        pace_.clear(); // paused, ended, or gone back: a new count
+        transport_->setKeptSpeed(std::nullopt);
+        if (!status.playing || status.finished)
+            return;
+    }
+    pace_.emplace_back(now, status.t);
+    while (pace_.size() > 2 && now - pace_[1].first >= 2.0)
+        pace_.pop_front();
+    const double wall = now - pace_.front().first;
+    if (wall < 1.5)
+        return;
+    transport_->setKeptSpeed((status.t - pace_.front().second) / wall / playbackRate(sceneInfo(scene_)));
 }
 
 } // namespace ab::ui

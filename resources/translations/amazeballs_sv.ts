@@ -2429,6 +2429,14 @@ Diagram, konstanter och körningen fungerar som vanligt.</translation>
         <source>t = %1 of %2 %3</source>
         <translation>t = %1 av %2 %3</translation>
     </message>
+    <message>
+        <source>%1×, plays at %2×</source>
+        <translation>%1×, spelas i %2×</translation>
+    </message>
+    <message>
+        <source>The run&apos;s steps take longer to compute than the time they show: it plays at %1× real time, in slow motion</source>
+        <translation>Körningens steg tar längre tid att räkna ut än den tid de visar: den spelas i %1× realtid, i ultrarapid</translation>
+    </message>
 </context>
 <context>
     <name>ab::ui::WindowShell</name>

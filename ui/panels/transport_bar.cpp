@@ -124,8 +124,31 @@ void TransportBar::setSpeed(double factor)
     updating_ = true;
     speed_->setValue(sliderFromSpeed(factor));
     updating_ = false;
-    // In words, so the room knows what it is watching: "10× real time".
-    speedLabel_->setText(tr("%1× real time").arg(factor, 0, 'g', 2));
+    factor_ = factor;
+    showSpeed();
+}
+
+void TransportBar::setKeptSpeed(std::optional<double> kept)
+{
+    if (kept == kept_)
+        return;
+    kept_ = kept;
+    showSpeed();
+}
+
+void TransportBar::showSpeed()
+{
+    // In words, so the room knows what it is watching: "10× real time", or what the machine
+    // keeps of it.
+    if (kept_ && *kept_ < 0.8 * factor_) {
+        speedLabel_->setText(tr("%1×, plays at %2×").arg(factor_, 0, 'g', 2).arg(*kept_, 0, 'g', 1));
+        speedLabel_->setToolTip(tr("The run's steps take longer to compute than the time they show: it plays at "
+                                   "%1× real time, in slow motion")
+                                    .arg(*kept_, 0, 'g', 2));
+    } else {
+        speedLabel_->setText(tr("%1× real time").arg(factor_, 0, 'g', 2));
+        speedLabel_->setToolTip({});
+    }
 }
 
 QString TransportBar::speedText() const

@@ -22,6 +22,10 @@ public:
 
     void setPlaying(bool playing);
     void setSpeed(double factor);
+    // The speed the run keeps while it plays, as a multiple of real time (nothing: unknown, or
+    // paused). Below 0.8 of the speed asked the label says so: "1×, plays at 0.3×" (the
+    // street's 10,000 balls on a slow machine), or the room takes slow motion for real time.
+    void setKeptSpeed(std::optional<double> kept);
     // The recorded run spans [start, end]; `unit` is the scene's time unit.
     void setRecorded(double start, double end, const QString& unit);
     // The moment shown: nothing when live.
@@ -77,6 +81,9 @@ private:
     std::optional<double> viewTime_;
     std::optional<double> shownTime_; // setShownTime, while looking back
     bool updating_ = false;
+    double factor_ = 1.0;        // the speed asked (setSpeed)
+    std::optional<double> kept_; // the speed kept (setKeptSpeed)
+    void showSpeed();
 };
 
 } // namespace ab::ui
