@@ -139,12 +139,8 @@ void checkChartRoom(const FigureOptions& options, std::string_view what)
     const QSizeF mm = options.millimetres();
     if (mm.width() >= kChartMinWidthMm && mm.height() >= kChartMinHeightMm)
         return;
-    const auto whole = [](double x) {
-        if (x >= 10.0)
-            return std::to_string(int(std::round(x)));
-        std::string tenths = std::to_string(int(std::round(10.0 * x))); // "0.2" for a pixel's size
-        return (tenths.size() < 2 ? "0" : tenths.substr(0, tenths.size() - 1)) + "." + tenths.back();
-    };
+    // Whole millimetres and pixels; a tenth below 10 ("0.2" for a pixel's size).
+    const auto whole = [](double x) { return formatNumber(x >= 10.0 ? std::round(x) : std::round(10.0 * x) / 10.0); };
     std::string at = options.size.name;
     if (options.size.pixels) // the pixels at the dpi make the physical size
         at += " at " + std::to_string(options.effectiveDpi()) + " dpi (" + whole(mm.width()) + "x" +

@@ -48,11 +48,16 @@ Recording::Recording(const SceneLayout& layout, const ConservationMeter& meter, 
     maxFrames_ = std::max<std::size_t>(frameBudgetBytes / frameBytes, 2); // two at least; the start is always kept
 }
 
-void Recording::showCurrent(long long step, const State& s, const ConservationSample& scene)
+void Recording::dropShown()
 {
     if (current_ >= 0)
         track_.truncateFrom(current_);
     current_ = -1;
+}
+
+void Recording::showCurrent(long long step, const State& s, const ConservationSample& scene)
+{
+    dropShown();
     if (!track_.empty() && step <= track_.steps().back())
         return; // recorded already (the last state of a finished run)
     addState(track_, step, s, trackedBall_, scene, layout_.street ? &*layout_.street : nullptr);
@@ -61,9 +66,7 @@ void Recording::showCurrent(long long step, const State& s, const ConservationSa
 
 void Recording::add(long long step, const State& s)
 {
-    if (current_ >= 0)
-        track_.truncateFrom(current_); // the sample shown, final now (showCurrent)
-    current_ = -1;
+    dropShown();                                        // the sample shown, final now (showCurrent)
     const ConservationSample scene = meter_.measure(s); // one O(N) pass a step
     const StreetSample street = layout_.street ? measureStreet(*layout_.street, s) : StreetSample{}; // two more
     addState(track_, step, s, trackedBall_, scene, layout_.street ? &*layout_.street : nullptr, &street);

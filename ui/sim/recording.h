@@ -97,6 +97,7 @@ public:
 
 private:
     void thinFrames();
+    void dropShown(); // takes the shown state's sample (showCurrent) off the track's end
 
     SceneLayout layout_;
     ConservationMeter meter_;

@@ -109,10 +109,10 @@ LabelInk labelInk(const QColor& colour, const QColor& background)
     const QColor halo = dark ? QColor(0, 0, 0) : QColor(255, 255, 255);
     constexpr int alpha = 220; // the scene shows faintly through the halo
     // The text stands 7:1 against the halo as drawn over the brightest scene (a dark halo) or
-    // the darkest (a light one): the composite a H + (1 - a) S with S white or black. Against
-    // the opaque halo only, high contrast's grey read 5.6:1 on the halo over its dark view.
-    const int through = dark ? 255 - alpha : 0;
-    const int worst = (dark ? 0 : alpha) + through;
+    // the darkest (a light one): the composite a H + (1 - a) S, black over white (255 - a) or
+    // white over black (a). Against the opaque halo only, high contrast's grey read 5.6:1 on
+    // the halo over its dark view.
+    const int worst = dark ? 255 - alpha : alpha;
     QColor text = withContrast(colour, QColor(worst, worst, worst), 7.0);
     QColor veil = halo;
     veil.setAlpha(alpha);
